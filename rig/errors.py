@@ -1,0 +1,46 @@
+"""Exceptions raised by friction-rig.
+
+Bad input raises :class:`ParameterError` (a :class:`ValueError`) whose message names the
+parameter, the value given and the valid range; an unknown name (model, shape, effect, scene
+key) raises :class:`UnknownNameError`, which also suggests the closest valid name.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+
+
+class RigError(Exception):
+    """Base class of every error friction-rig raises on purpose."""
+
+
+class ParameterError(RigError, ValueError):
+    """A parameter is outside its valid range (or not a number where one is needed)."""
+
+    def __init__(self, name: str, value: object, valid: str, *, hint: str = "") -> None:
+        self.name = name
+        self.value = value
+        self.valid = valid
+        message = f"{name} = {value!r} is not valid; valid: {valid}"
+        if hint:
+            message += f" ({hint})"
+        super().__init__(message)
+
+
+class UnknownNameError(ParameterError):
+    """A name (model, shape, effect, scene key, ...) that is not one of the known ones."""
+
+    def __init__(self, kind: str, name: object, choices: Iterable[str]) -> None:
+        self.choices = sorted(choices)
+        close = difflib.get_close_matches(str(name), self.choices, n=1, cutoff=0.5)
+        hint = f"did you mean {close[0]!r}?" if close else ""
+        super().__init__(kind, name, "one of " + ", ".join(self.choices), hint=hint)
+
+
+class ConvergenceError(RigError, RuntimeError):
+    """An iteration (contact solve, settling, reduction) did not converge; says what and how far."""
+
+
+class LogFormatError(RigError, ValueError):
+    """A measurement log is damaged or not one of ours: names the file and what is wrong."""
