@@ -1,0 +1,291 @@
+"""Koziarski's kinematic law of friction (seed 000, eqs. 7-20) on a grid, solved as one coupled system.
+
+Discrete steady rolling (seed notes 1.5, 1.9), dimensionless (lengths in a, traction in mu p0,
+displacement in mu p0 a/G, slip in mu p0 v/G, G = Kalker's combined shear modulus):
+
+    s_c = s_g,c + (U_c - U_up(c)) / hx                          eqs. (8), (10), (13)
+    U   = K t + (Psi - 1) K_self q    (plastic part: local)      eqs. (6), (25)
+    q   = t + Gamma Lambda^-1 D2 U    (surface inertia)          eq. (15), model choice
+    |q_c| <= r_c, and q_c = -r_c s_c/|s_c| where s_c != 0      eqs. (13), (14)
+
+t is the traction the half-space feels (q = t without inertia). The paper's law (14),
+q = -mu p w/max(|w|, v0), is exactly this Coulomb condition once the element's own slip
+v0 = Psi v_el (eqs. 20, 25) is split off the total slip; solving the coupled problem for every
+element at once *is* the kinematic law. The element-by-element marching that the paper
+advertises ("no iterative steps") diverges under grid refinement (seed notes 1.9 step 6;
+tests/contact/test_marching_diverges.py shows it), so it is not offered.
+
+Solver: semi-smooth Newton on F(t) = q - P_r(q - rho s) (P_r: projection on the disc of radius
+r per cell), GMRES on the exact generalised Jacobian with FFT influence products, right-
+preconditioned by (restricted circulant inverse of K) o (exact upwind solve of the local law);
+FASTSIM gives the start, a backtracking line search globalises. Static friction (mu0/mu > 1)
+adds an outer loop over the stick/slip memory of each material point along its row: it starts
+with every point holding mu0 p and moves a point to mu p once its material has slipped one cell
+upstream; a point never moves back within one solve, so the loop ends after at most N passes
+(the stick/slip law with memory is hysteretic and need not have one fixed point otherwise).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sparse
+from scipy.sparse.linalg import LinearOperator, gmres, splu
+
+from rig.contact.effects import ContactEffects
+from rig.contact.grid import Grid
+from rig.contact.influence import InfluenceOperator, influence_operator
+from rig.contact.kalker import kalker_coefficients
+from rig.contact.kinematics import Creepage
+from rig.contact.models import fastsim
+from rig.errors import ConvergenceError
+
+NEWTON_TOL = 1e-9  # max |F| relative to the largest traction bound (tractions are O(1) in mu p0)
+MAX_NEWTON = 50
+MAX_MEMORY_PASSES = 50
+
+
+@dataclass(frozen=True)
+class GridSolution:
+    """Traction q (2, N) [mu p0], slip s (2, N) [mu p0 v/G, zero where stuck], stick (N,), counts."""
+
+    q: np.ndarray
+    s: np.ndarray
+    stick: np.ndarray
+    newton_iterations: int
+    krylov_iterations: int
+    memory_passes: int
+
+
+def project(z: np.ndarray, r: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Projection of each 2-vector z_c on the disc |.| <= r_c; returns (P(z), |z|, inside mask)."""
+    norm = np.hypot(z[0], z[1])
+    inside = norm <= r
+    scale = np.where(inside, 1.0, r / np.where(norm > 0.0, norm, 1.0))
+    return z * scale, norm, inside
+
+
+class Discretisation:
+    """The linear parts of the discrete model on one grid: U(t), q(t, U), s(q, U)."""
+
+    def __init__(self, grid: Grid, op: InfluenceOperator, effects: ContactEffects) -> None:
+        self.grid = grid
+        self.op = op
+        self.idx = grid.index
+        self.up = self.idx - grid.ny  # one cell upstream (inside the rectangle: ghost columns)
+        self.plastic = effects.plastic_slip
+        self.inertia = effects.surface_inertia
+        self.psi = 1.0 if self.plastic is None else self.plastic.psi
+        self.k_self = op.self_term[:, None]
+
+    def displacement(self, t: np.ndarray) -> np.ndarray:
+        """Half-space displacement on the full rectangle, flattened to (2, cells)."""
+        return self.op.apply(self.grid.scatter(t)).reshape(2, -1)
+
+    def interface_traction(self, t: np.ndarray, u_full: np.ndarray) -> np.ndarray:
+        if self.inertia is None:
+            return t
+        return t + self.inertia.layer_force(u_full, self.grid, self.op)
+
+    def elastic_slip(self, q: np.ndarray, u_full: np.ndarray) -> np.ndarray:
+        """(U_c - U_up)/hx of the displacement a material point carries (eqs. 8, 10)."""
+        du = u_full[:, self.idx] - u_full[:, self.up]
+        if self.plastic is not None:
+            du = du + self.plastic.carried_displacement_step(q, self.k_self, self.idx, self.up, self.grid)
+        return du / self.grid.hx
+
+
+class _Preconditioner:
+    """M^-1 = Kc^-1 o L^-1: L is the Jacobian with K replaced by K_self, which only couples a
+    cell to its upstream neighbour (solved exactly, sparse LU), and Kc^-1 the circulant inverse
+    of the influence operator restricted to the contact (Vollebregt's FFT preconditioner idea)."""
+
+    def __init__(self, disc: Discretisation, rho: float) -> None:
+        grid = disc.grid
+        n = disc.idx.size
+        position = -np.ones(grid.p.size, dtype=int)
+        position[disc.idx] = np.arange(n)
+        upstream = position[disc.up]
+        self.n = n
+        self.disc = disc
+        self.has_up = np.flatnonzero(upstream >= 0)
+        self.up_pos = upstream[self.has_up]
+        k0 = disc.op.self_term[0]
+        self.radial = 1.0 / k0
+        self.tangential = disc.psi * rho / grid.hx
+
+    def factor(self, zhat: np.ndarray, ratio: np.ndarray, inside: np.ndarray) -> LinearOperator:
+        n = self.n
+        pxx = np.where(inside, 1.0, ratio * (1.0 - zhat[0] ** 2))
+        pxy = np.where(inside, 0.0, -ratio * zhat[0] * zhat[1])
+        pyy = np.where(inside, 1.0, ratio * (1.0 - zhat[1] ** 2))
+        k, c = self.radial, self.tangential
+        cells = np.arange(n)
+        up, hu = self.up_pos, self.has_up
+        rows = np.concatenate([cells, cells, cells + n, cells + n, hu, hu, hu + n, hu + n])
+        cols = np.concatenate([cells, cells + n, cells, cells + n, up, up + n, up, up + n])
+        vals = np.concatenate([
+            (1 - pxx) * k + pxx * c, pxy * (c - k), pxy * (c - k), (1 - pyy) * k + pyy * c,
+            -pxx[hu] * c, -pxy[hu] * c, -pxy[hu] * c, -pyy[hu] * c,
+        ])
+        lu = splu(sparse.csc_matrix((vals, (rows, cols)), shape=(2 * n, 2 * n)), permc_spec="NATURAL")
+        grid = self.disc.grid
+        op = self.disc.op
+
+        def apply(v):
+            w = lu.solve(v).reshape(2, n)
+            return grid.gather(op.apply_inverse(grid.scatter(w))).ravel()
+
+        return LinearOperator((2 * n, 2 * n), matvec=apply, dtype=float)
+
+
+def solve_grid(grid: Grid, poisson: float, creepage: Creepage, effects: ContactEffects) -> GridSolution:
+    """Solve the discrete kinematic law of friction for one steady rolling state."""
+    op = influence_operator(grid, poisson)
+    disc = Discretisation(grid, op, effects)
+    xc, yc = grid.centres()
+    s_g = creepage.field(xc, yc)
+    p = grid.gather(grid.p)
+    n_cells = p.size
+    rho = grid.hx / (disc.psi * op.self_term[0] - op.upstream_term[0])
+    precond = _Preconditioner(disc, rho)
+
+    static = effects.static_friction
+    sticking_upstream = np.ones(n_cells, dtype=bool)
+    r = p if static is None else static.bound(p, sticking_upstream)
+    t = _fastsim_start(grid, poisson, creepage, r)
+    total_newton = total_krylov = 0
+    for memory_pass in range(1, MAX_MEMORY_PASSES + 1):
+        t, n_newton, n_krylov = _newton(disc, precond, s_g, r, rho, t)
+        total_newton += n_newton
+        total_krylov += n_krylov
+        u = disc.displacement(t)
+        q = disc.interface_traction(t, u)
+        s = s_g + disc.elastic_slip(q, u)
+        stick = np.hypot(q[0], q[1]) < r * (1.0 - 1e-9)
+        if static is None:
+            break
+        new_upstream = sticking_upstream & static.upstream_state(stick, grid)
+        if np.array_equal(new_upstream, sticking_upstream):
+            break
+        sticking_upstream = new_upstream
+        r = static.bound(p, sticking_upstream)
+    else:
+        raise ConvergenceError(
+            f"stick/slip memory (static friction mu0/mu = {static.ratio}) did not settle in "
+            f"{MAX_MEMORY_PASSES} passes: the stick/slip partition keeps changing"
+        )
+    return GridSolution(q, np.where(stick, 0.0, s), stick, total_newton, total_krylov, memory_pass)
+
+
+def solve_full_stick(grid: Grid, poisson: float, creepage: Creepage, effects: ContactEffects, rtol: float = 1e-12) -> np.ndarray:
+    """Tractions (2, N) [mu p0] if every element adheres (no traction bound): s = 0 everywhere.
+
+    This is linear theory on the grid (alpha' -> inf, or unlimited friction); used to compute
+    creepage coefficients (rig.contact.linear_tables) and to check the linear limit.
+    """
+    op = influence_operator(grid, poisson)
+    disc = Discretisation(grid, op, effects)
+    xc, yc = grid.centres()
+    s_g = creepage.field(xc, yc)
+    n = xc.size
+    rho = grid.hx / (disc.psi * op.self_term[0] - op.upstream_term[0])
+    inside = np.ones(n, dtype=bool)
+    preconditioner = _Preconditioner(disc, rho).factor(np.zeros((2, n)), np.ones(n), inside)
+
+    def operator(v):
+        dt = v.reshape(2, n)
+        du = disc.displacement(dt)
+        return disc.elastic_slip(disc.interface_traction(dt, du), du).ravel()
+
+    t, info = gmres(
+        LinearOperator((2 * n, 2 * n), matvec=operator, dtype=float), -s_g.ravel(),
+        rtol=rtol, atol=0.0, restart=100, maxiter=50, M=preconditioner,
+    )
+    if info != 0:
+        raise ConvergenceError(f"full-stick linear solve did not reach rtol {rtol:g} (GMRES info {info})")
+    return t.reshape(2, n)
+
+
+def _fastsim_start(grid: Grid, poisson: float, creepage: Creepage, r: np.ndarray) -> np.ndarray:
+    """FASTSIM tractions with the ellipse's Kalker flexibility: a start that already has the
+    right stick/slip pattern, so Newton needs few steps (a guess only; any start converges)."""
+    b = float(np.clip(grid.b_over_a, 0.1, 10.0))
+    flex = fastsim.flexibility("ellipse", b, kalker_coefficients(b, poisson), creepage)
+    return grid.gather(fastsim.march(grid, fastsim.slip_increments(grid, creepage), grid.scatter(r), flex))
+
+
+def _newton(disc: Discretisation, precond: _Preconditioner, s_g, r, rho, t0):
+    """Semi-smooth Newton-Krylov for F(t) = q - P_r(q - rho s) = 0; returns (t, iterations, Krylov its)."""
+    n = r.size
+    scale = max(float(np.max(r)), 1e-300)
+    tol = NEWTON_TOL * scale
+
+    def evaluate(t):
+        u = disc.displacement(t)
+        q = disc.interface_traction(t, u)
+        z = q - rho * (s_g + disc.elastic_slip(q, u))
+        pz, zn, inside = project(z, r)
+        return q - pz, z, zn, inside
+
+    t = t0
+    f, z, zn, inside = evaluate(t)
+    fnorm = float(np.abs(f).max())
+    krylov = 0
+    for iteration in range(MAX_NEWTON + 1):
+        if fnorm <= tol:
+            return t, iteration, krylov
+        if iteration == MAX_NEWTON:
+            break
+        safe = np.where(zn > 0.0, zn, 1.0)
+        zhat = z / safe
+        ratio = np.where(inside, 1.0, r / safe)
+
+        def jacobian(v, zhat=zhat, ratio=ratio, inside=inside):
+            dt = v.reshape(2, n)
+            du = disc.displacement(dt)
+            dq = disc.interface_traction(dt, du)
+            dz = dq - rho * disc.elastic_slip(dq, du)
+            radial = zhat[0] * dz[0] + zhat[1] * dz[1]
+            dp = np.where(inside, dz, ratio * (dz - zhat * radial))
+            return (dq - dp).ravel()
+
+        counter = _Counter()
+        forcing = min(0.1, max(fnorm / scale, 0.1 * tol / fnorm))
+        delta, _ = gmres(
+            LinearOperator((2 * n, 2 * n), matvec=jacobian, dtype=float),
+            -f.ravel(),
+            rtol=forcing,
+            atol=0.0,
+            restart=60,
+            maxiter=10,
+            M=precond.factor(zhat, ratio, inside),
+            callback=counter,
+            callback_type="pr_norm",
+        )
+        krylov += counter.count
+        delta = delta.reshape(2, n)
+        step = 1.0
+        while True:
+            trial = evaluate(t + step * delta)
+            trial_norm = float(np.abs(trial[0]).max())
+            if trial_norm < (1.0 - 1e-4 * step) * fnorm or step < 1e-4:
+                break
+            step *= 0.5
+        t = t + step * delta
+        (f, z, zn, inside), fnorm = trial, trial_norm
+    raise ConvergenceError(
+        f"kinematic contact solve did not converge in {MAX_NEWTON} Newton iterations: residual "
+        f"{fnorm / scale:.2e} of the traction bound (tolerance {NEWTON_TOL:.0e})"
+    )
+
+
+class _Counter:
+    """GMRES callback that counts iterations."""
+
+    def __init__(self) -> None:
+        self.count = 0
+
+    def __call__(self, _residual: float) -> None:
+        self.count += 1

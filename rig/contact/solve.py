@@ -1,0 +1,171 @@
+"""``solve``: one entry point for the contact-model ladder rigid -> linear -> fastsim -> kinematic.
+
+    from rig.contact import solve
+    r = solve("kinematic", shape="ellipse", b_over_a=1.0, alpha=10.0, c_over_a=0.0, l_over_a=0.0,
+              poisson=0.28, n=32)
+    r.nu_T, r.nu_v, r.nu_0, r.stick_fraction
+
+alpha is alpha' of eq. (21) (0 = rigid sliding, inf = no slip); (c/a, l/a) is the rolling point;
+poisson is the (combined) Poisson ratio of the pair; n = cells across 2a for the grid models.
+``solve_creepage`` states the same problem in creepages, which also covers zero spin (hard case 1).
+Effects are keyword arguments (see rig.contact.effects); an effect not named is not built.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rig import validate
+from rig.contact.effects import EFFECT_KEYWORDS, ContactEffects
+from rig.contact.grid import SHAPES, make_grid
+from rig.contact.integrate import coefficients
+from rig.contact.kalker import B_OVER_A_RANGE, creep_coefficients
+from rig.contact.kinematics import Creepage
+from rig.contact.models import fastsim, kinematic, linear, rigid
+from rig.contact.result import ContactMaps, ContactResult
+from rig.errors import ParameterError
+
+MODELS = ("rigid", "linear", "fastsim", "kinematic")
+DEFAULT_N = 32
+N_RANGE = (4, 512)
+# Effects each model can represent; the others would be silently meaningless, so they are errors.
+MODEL_EFFECTS = {
+    "rigid": ("rolling_length",),
+    "linear": ("rolling_length",),
+    "fastsim": ("rolling_length",),
+    "kinematic": tuple(EFFECT_KEYWORDS),
+}
+
+
+def solve(
+    model: str,
+    *,
+    shape: str,
+    b_over_a: float,
+    alpha: float,
+    c_over_a: float,
+    l_over_a: float,
+    poisson: float,
+    n: int | None = None,
+    **effects: float,
+) -> ContactResult:
+    """Force coefficients of a steady rolling contact with spin about the rolling point (c, l).
+
+    alpha: track deformability alpha' of eq. (21) [1], >= 0 (inf allowed); c_over_a, l_over_a:
+    rolling point [units of a]; poisson: Poisson ratio [1] in [0, 0.5]; n: cells across 2a
+    (default 32); effects: psi, static_ratio, inertia_number, rolling_length (kinematic model).
+    """
+    alpha = validate.number("alpha", alpha, 0.0, allow_inf=True)
+    c = validate.number("c_over_a", c_over_a)
+    l = validate.number("l_over_a", l_over_a)
+    nu = validate.number("poisson", poisson, 0.0, 0.5)
+    if alpha == 0.0:
+        creepage = None  # rigid sliding: only the direction of the slip matters
+    else:
+        creepage = Creepage.from_rolling_point(alpha, c, l, nu)
+    info = dict(alpha=alpha, c_over_a=c, l_over_a=l)
+    return _solve(model, shape, b_over_a, creepage, (c, l), nu, n, effects, info)
+
+
+def solve_creepage(
+    model: str,
+    *,
+    shape: str,
+    b_over_a: float,
+    xi: float,
+    eta: float,
+    phi: float,
+    poisson: float,
+    n: int | None = None,
+    **effects: float,
+) -> ContactResult:
+    """As :func:`solve`, with the rigid slip given as creepages in elastic units (Creepage).
+
+    xi, eta: centre slip [mu p0 v/G]; phi: spin a G (w0/v)/(mu p0) [1]; phi = 0 (no spin) is
+    allowed: the rolling point is then at infinity and nu_0 is NaN (use nu_Mo).
+    """
+    creepage = Creepage(
+        xi=validate.number("xi", xi), eta=validate.number("eta", eta), phi=validate.number("phi", phi)
+    )
+    nu = validate.number("poisson", poisson, 0.0, 0.5)
+    return _solve(model, shape, b_over_a, creepage, None, nu, n, effects, dict(xi=xi, eta=eta, phi=phi))
+
+
+def _solve(model, shape, b_over_a, creepage, rolling_point, nu, n, effects, info) -> ContactResult:
+    model = validate.choice("model", model, MODELS)
+    shape = validate.choice("shape", shape, SHAPES)
+    beta = validate.number("b_over_a", b_over_a, *B_OVER_A_RANGE)
+    n = DEFAULT_N if n is None else validate.integer("n", n, *N_RANGE)
+    validate.known_keys("effect", effects, EFFECT_KEYWORDS)
+    for name, value in effects.items():
+        if name not in MODEL_EFFECTS[model]:
+            raise ParameterError(name, value, f"not available for model {model!r}; it supports {MODEL_EFFECTS[model]}")
+    built = ContactEffects.from_keywords(**effects)
+    if built.rolling_resistance is not None:
+        creepage, rolling_point = built.rolling_resistance.shift(creepage, rolling_point)
+    if creepage is None:  # alpha' = 0: unit spin about C fixes the slip directions
+        creepage = Creepage(xi=rolling_point[1], eta=-rolling_point[0], phi=1.0)
+        rigid_sliding = True
+    else:
+        rigid_sliding = False
+    info = dict(info, poisson=nu, n=n, effects=built.names())
+
+    if model == "rigid" or (rigid_sliding and model in ("fastsim", "kinematic")):
+        return _rigid(model, shape, beta, n, creepage, info, on_grid=model != "rigid")
+    if model == "linear":
+        if rigid_sliding:
+            raise ParameterError("alpha", 0.0, "> 0 for the linear model (it has no sliding)")
+        return _linear(shape, beta, nu, creepage, info)
+    grid = make_grid(shape, beta, n)
+    xc, yc = grid.centres()
+    p = grid.gather(grid.p)
+    s_g = creepage.field(xc, yc)
+    if model == "fastsim":
+        flex = fastsim.flexibility(shape, beta, creep_coefficients(shape, beta, nu), creepage)
+        q = grid.gather(fastsim.march(grid, fastsim.slip_increments(grid, creepage), grid.p, flex))
+        stick = np.hypot(q[0], q[1]) < p * (1.0 - 1e-12)
+        slip = np.where(stick, 0.0, s_g)  # FASTSIM's slip direction follows the rigid slip
+        info["flexibility"] = flex
+    else:
+        solution = kinematic.solve_grid(grid, nu, creepage, built)
+        q, stick, slip = solution.q, solution.stick, solution.s
+        info.update(
+            newton_iterations=solution.newton_iterations,
+            krylov_iterations=solution.krylov_iterations,
+            memory_passes=solution.memory_passes,
+        )
+    maps = ContactMaps(xc, yc, np.full(p.size, grid.cell_area), p, q, slip, stick)
+    return _result(model, shape, beta, xc, yc, q, p, creepage, float(np.mean(stick)), maps, info)
+
+
+def _rigid(model, shape, beta, n, creepage, info, *, on_grid: bool) -> ContactResult:
+    if on_grid:  # the grid model's own alpha' = 0 limit, on its cells
+        grid = make_grid(shape, beta, n)
+        x, y = grid.centres()
+        p = grid.gather(grid.p)
+    else:
+        x, y, p = rigid.sample_points(shape, beta, n)
+    q = rigid.tractions(x, y, p, creepage)
+    return _result(model, shape, beta, x, y, q, p, creepage, 0.0, None, info)
+
+
+def _linear(shape, beta, nu, creepage, info) -> ContactResult:
+    values = linear.force_coefficients(shape, beta, creep_coefficients(shape, beta, nu), creepage)
+    c, l = creepage.rolling_point()
+    if creepage.phi == 0.0:
+        nu_mc = nu_0 = np.nan
+    else:
+        nu_mc = values["nu_Mo"] - c * values["nu_v"] + l * values["nu_T"]
+        nu_0 = -np.sign(creepage.phi) * nu_mc
+    return ContactResult(
+        "linear", shape, beta, values["nu_T"], values["nu_v"], float(nu_0), values["nu_Mo"], 1.0,
+        None, dict(info, nu_MC=float(nu_mc)),
+    )
+
+
+def _result(model, shape, beta, x, y, q, p, creepage, stick_fraction, maps, info) -> ContactResult:
+    values = coefficients(x, y, q, p, creepage)
+    return ContactResult(
+        model, shape, beta, values["nu_T"], values["nu_v"], float(values["nu_0"]), values["nu_Mo"],
+        stick_fraction, maps, dict(info, nu_MC=float(values["nu_MC"])),
+    )
