@@ -1,0 +1,87 @@
+"""Tangent balance (stand A, braking moment T2 of wheel 2): moment [N m] -> scale reading.
+
+The brake's reaction moment is taken by an arm of length r and balanced by a pendulum whose
+deflection is read on a scale graduated in force at the arm; the reading is the force at the
+arm rounded to the scale step (resolution) times the arm. The paper gives 0.049 N (5 gf) at the
+arm "corresponding to" 0.0196 N m, hence the arm r = 0.0196/0.049 = 0.400 m (seed notes 3.1).
+
+Uncertainty model (documented choice): 0.049 N is read as the scale step, the reading error is
+uniform within +-step/2, u = step/sqrt(12) = 0.0141 N at the arm = 5.66e-3 N m. The reading
+the paper calls "accuracy" (0.0196 N m) is the step in moment; a conservative user can read it
+as a bound +-0.0196 N m instead (u = 0.0113 N m) - see docs/instruments.md. Readings beyond
+the full scale stick at +-full scale and are flagged (never silent). Optional noise [N at the
+arm] models reading scatter (pivot friction, pointer jitter); off by default.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from sensors import validate
+from sensors.errors import InstrumentParameterError
+from sensors.noise import WhiteNoise
+
+STAND_A_RESOLUTION_N = 0.049
+"""Scale step at the arm [N] (text: 0.049 N = 5 gf)."""
+STAND_A_ARM_M = 0.0196 / 0.049
+"""Arm of the balance [m] (computed from the text: 0.0196 N m / 0.049 N = 0.400 m)."""
+STAND_A_FULL_SCALE_N = 25.0
+"""Full scale at the arm [N] (assumed: T2 <= mu F_N r2 ~ 7.8 N m, i.e. <= 19.5 N at 0.4 m)."""
+DEFAULT_NOISE_STD_N = 0.01
+"""Reading scatter at the arm when the noise effect is on [N] (assumed, ~ step/5)."""
+
+
+@dataclass(frozen=True, eq=False)
+class BalanceReading:
+    """Moment readings [N m] and a flag per reading for over-range (reading stuck at full scale)."""
+
+    moment_N_m: np.ndarray
+    over_range: np.ndarray
+
+
+@dataclass(frozen=True, eq=False)
+class TangentBalance:
+    """Arm [m], scale step at the arm [N], full scale at the arm [N], optional noise [N]."""
+
+    arm_m: float = STAND_A_ARM_M
+    resolution_N: float = STAND_A_RESOLUTION_N
+    full_scale_N: float = STAND_A_FULL_SCALE_N
+    noise: WhiteNoise | None = None
+
+    def __post_init__(self) -> None:
+        validate.number("balance_arm_m", self.arm_m, 0.0, 5.0, lo_open=True)
+        validate.number("balance_resolution_N", self.resolution_N, 0.0, 100.0, lo_open=True)
+        validate.number("balance_full_scale_N", self.full_scale_N, 0.0, 1.0e5, lo_open=True)
+        if self.full_scale_N < self.resolution_N:
+            raise InstrumentParameterError(
+                "balance_full_scale_N", self.full_scale_N, f">= balance_resolution_N = {self.resolution_N}"
+            )
+
+    @property
+    def resolution_N_m(self) -> float:
+        """Scale step in moment, arm * resolution [N m] (0.0196 N m for stand A)."""
+        return self.arm_m * self.resolution_N
+
+    @property
+    def resolution_standard_uncertainty_N_m(self) -> float:
+        """Standard uncertainty from the scale step, step/sqrt(12) [N m]."""
+        return self.resolution_N_m / np.sqrt(12.0)
+
+    def read(self, moment_N_m: np.ndarray | float) -> BalanceReading:
+        """Scale readings [N m] for the true moments [N m] (array or scalar)."""
+        m = validate.finite_array("moment_N_m", np.atleast_1d(np.asarray(moment_N_m, dtype=float)))
+        force = m / self.arm_m
+        if self.noise is not None:
+            force = force + self.noise.sample(force.size)
+        over = np.abs(force) > self.full_scale_N
+        force = np.clip(force, -self.full_scale_N, self.full_scale_N)
+        reading = np.rint(force / self.resolution_N) * self.resolution_N * self.arm_m
+        return BalanceReading(moment_N_m=reading, over_range=over)
+
+
+def stand_a_balance(*, noise_rng: np.random.Generator | None = None) -> TangentBalance:
+    """Stand A's tangent balance with the defaults above; noise on iff its generator is given."""
+    noise = None if noise_rng is None else WhiteNoise(DEFAULT_NOISE_STD_N, noise_rng)
+    return TangentBalance(noise=noise)

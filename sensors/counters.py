@@ -1,0 +1,239 @@
+"""Speed counters of stand A: lamp + photocell, pulse amplifier, electronic counter, common gate timer.
+
+Chain (seed 000 3.1.1, Fig. 9: discs 13/14, photocells with lamps 15/16, pulse amplifiers 20/21,
+counters 18/19, timer 22): each mark passing a photocell gives a light pulse of amplitude
+``pulse_amplitude_V``; the pulse amplifier multiplies it by ``gain`` and its discriminator
+emits one counting pulse when the amplified amplitude reaches ``threshold_V``; a counter adds
+the counting pulses while its gate is open. One timer opens and closes *all* counters at the
+same instants, so the counts N_k share the gate time T and omega_k = 2 pi N_k/(z_k T) (seed
+notes 2). With the amplitude-noise effect off every pulse is counted (the nominal amplified
+amplitude must reach the threshold, checked on construction); with it on, a pulse whose noisy
+amplitude falls below the threshold is missed. Noise never creates extra pulses.
+
+Event-driven simulation (simpy): one process per channel emits its pulses at the mark-crossing
+instants of the true trajectory (:mod:`sensors.strobe`); the gate process switches every counter
+at the opening and closing instants. The gate is the half-open interval [open, open + T): the
+gate edges are scheduled with simpy's URGENT priority, so at a tie they act before a pulse.
+Pulses outside [open, open + T] cannot change a count and are not emitted.
+
+Counting quantisation (model, docs/instruments.md): with the marks' phase at the gate opening
+random, N - f T = U_close - U_open with U uniform in [0, 1) at each edge, i.e. triangular on
+(-1, 1), variance 1/6; for a known fractional part r of f T the variance is r (1 - r) <= 1/4.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+
+import numpy as np
+import simpy
+from simpy.events import URGENT
+
+from sensors import validate
+from sensors.errors import InstrumentParameterError
+from sensors.noise import WhiteNoise
+from sensors.strobe import StrobeDisc
+
+DEFAULT_PULSE_AMPLITUDE_V = 0.05
+"""Photocell pulse amplitude [V] (assumed: tens of mV from a vacuum/semiconductor photocell)."""
+DEFAULT_AMPLIFIER_GAIN = 100.0
+"""Pulse amplifier gain [V/V] (assumed)."""
+DEFAULT_THRESHOLD_V = 2.5
+"""Discriminator threshold at the amplifier output [V] (assumed: half the nominal 5 V pulse)."""
+DEFAULT_AMPLITUDE_NOISE_STD_V = 0.00625
+"""Pulse-amplitude scatter at the photocell when that effect is on [V] (assumed: 12.5 % of nominal,
+so the threshold lies 4 std below the nominal pulse: P(miss) = Phi(-4) = 3.2e-5 per pulse)."""
+
+COUNT_QUANTISATION_STD = 1.0 / np.sqrt(6.0)
+"""Standard uncertainty of a count from quantisation, random gate phase [counts]."""
+
+
+def count_quantisation_variance(fraction: float | None = None) -> float:
+    """Variance of N - f T [counts^2]: r (1 - r) for a known fractional part r of f T, else 1/6."""
+    if fraction is None:
+        return 1.0 / 6.0
+    r = validate.number("fraction", fraction, 0.0, 1.0, hi_open=True)
+    return r * (1.0 - r)
+
+
+@dataclass(frozen=True, eq=False)
+class Photocell:
+    """Lamp + photocell: pulse amplitude [V] per mark and optional amplitude noise [V]."""
+
+    pulse_amplitude_V: float = DEFAULT_PULSE_AMPLITUDE_V
+    amplitude_noise: WhiteNoise | None = None
+
+    def __post_init__(self) -> None:
+        validate.number("pulse_amplitude_V", self.pulse_amplitude_V, 0.0, 100.0, lo_open=True)
+
+    def amplitudes_V(self, n: int) -> np.ndarray:
+        """Amplitudes [V] of ``n`` successive pulses."""
+        nominal = np.full(n, self.pulse_amplitude_V)
+        if self.amplitude_noise is None:
+            return nominal
+        return nominal + self.amplitude_noise.sample(n)
+
+
+@dataclass(frozen=True)
+class PulseAmplifier:
+    """Pulse amplifier with discriminator: gain [V/V], threshold at its output [V]."""
+
+    gain: float = DEFAULT_AMPLIFIER_GAIN
+    threshold_V: float = DEFAULT_THRESHOLD_V
+
+    def __post_init__(self) -> None:
+        validate.number("pulse_gain", self.gain, 0.0, 1.0e6, lo_open=True)
+        validate.number("threshold_V", self.threshold_V, 0.0, 1000.0, lo_open=True)
+
+    def fires(self, amplitudes_V: np.ndarray) -> np.ndarray:
+        """True where a photocell pulse [V] gives a counting pulse."""
+        return self.gain * np.asarray(amplitudes_V, dtype=float) >= self.threshold_V
+
+
+@dataclass(frozen=True, eq=False)
+class CounterChannel:
+    """One speed channel: strobe disc, photocell, pulse amplifier (its counter is built per gate)."""
+
+    disc: StrobeDisc
+    photocell: Photocell = field(default_factory=Photocell)
+    amplifier: PulseAmplifier = field(default_factory=PulseAmplifier)
+
+    def __post_init__(self) -> None:
+        nominal = self.amplifier.gain * self.photocell.pulse_amplitude_V
+        if nominal < self.amplifier.threshold_V:
+            raise InstrumentParameterError(
+                "threshold_V", self.amplifier.threshold_V,
+                f"<= gain * pulse amplitude = {nominal:g} V (else no pulse is ever counted)",
+            )
+
+
+@dataclass(frozen=True)
+class CountReading:
+    """Counter totals over one common gate: counts [1] and marks per disc [1] by channel name,
+    gate opening [s] and gate time [s]."""
+
+    counts: Mapping[str, int]
+    marks: Mapping[str, int]
+    gate_open_s: float
+    gate_time_s: float
+
+    def angular_speed_rad_s(self, channel: str) -> float:
+        """Mean angular speed over the gate, 2 pi N/(z T) [rad/s] (seed notes 2)."""
+        if channel not in self.counts:
+            raise InstrumentParameterError("channel", channel, "one of " + ", ".join(sorted(self.counts)))
+        return 2.0 * np.pi * self.counts[channel] / (self.marks[channel] * self.gate_time_s)
+
+
+class _Counter:
+    """Electronic counter (18/19): a register that adds pulses while its gate is open."""
+
+    __slots__ = ("is_open", "count")
+
+    def __init__(self) -> None:
+        self.is_open = False
+        self.count = 0
+
+
+class _GateEdge(simpy.events.Event):
+    """A timeout that fires before ordinary events due at the same instant (priority URGENT)."""
+
+    def __init__(self, env: simpy.Environment, delay: float) -> None:
+        super().__init__(env)
+        self._ok = True
+        self._value = None
+        env.schedule(self, URGENT, max(delay, 0.0))
+
+
+def _gate(env: simpy.Environment, counters: list[_Counter], open_s: float, duration_s: float):
+    """Timer 22: open every counter at ``open_s`` [s], close all of them ``duration_s`` [s] later."""
+    yield _GateEdge(env, open_s - env.now)
+    for c in counters:
+        c.is_open = True
+    yield _GateEdge(env, open_s + duration_s - env.now)
+    for c in counters:
+        c.is_open = False
+
+
+def _pulses(env: simpy.Environment, times: list[float], fires: list[bool], counter: _Counter):
+    """Photocell + amplifier: emit the counting pulses of one channel at their instants [s]."""
+    for t, fire in zip(times, fires):
+        yield env.timeout(max(t - env.now, 0.0))
+        if fire and counter.is_open:
+            counter.count += 1
+
+
+@dataclass(frozen=True, eq=False)
+class SpeedCounters:
+    """The counting system: named channels sharing one gate timer."""
+
+    channels: Mapping[str, CounterChannel]
+
+    def __post_init__(self) -> None:
+        if not self.channels:
+            raise InstrumentParameterError("channels", dict(self.channels), "at least one named CounterChannel")
+        for name, ch in self.channels.items():
+            if not isinstance(ch, CounterChannel):
+                raise InstrumentParameterError(f"channels[{name!r}]", ch, "a CounterChannel")
+        object.__setattr__(self, "channels", MappingProxyType(dict(self.channels)))
+
+    def measure(
+        self,
+        trajectories: Mapping[str, tuple[np.ndarray, np.ndarray]],
+        gate_open_s: float,
+        gate_time_s: float,
+    ) -> CountReading:
+        """Count over the gate [gate_open_s, gate_open_s + gate_time_s) [s].
+
+        ``trajectories[name] = (t [s], theta [rad])``: the wheel's true angle samples, which must
+        cover the gate. A channel with no pulse in the gate reads 0.
+        """
+        missing = set(self.channels) - set(trajectories)
+        if missing:
+            raise InstrumentParameterError(
+                "trajectories", sorted(trajectories), f"an entry for each channel {sorted(self.channels)}"
+            )
+        t_open = validate.number("gate_open_s", gate_open_s)
+        duration = validate.number("gate_time_s", gate_time_s, 0.0, lo_open=True)
+        t_close = t_open + duration
+        env = simpy.Environment(initial_time=t_open)
+        counters = {name: _Counter() for name in self.channels}
+        env.process(_gate(env, list(counters.values()), t_open, duration))
+        for name, channel in self.channels.items():
+            t, theta = validate.time_series(
+                f"trajectories[{name!r}].t_s", trajectories[name][0],
+                f"trajectories[{name!r}].theta_rad", trajectories[name][1],
+            )
+            if t[0] > t_open or t[-1] < t_close:
+                raise InstrumentParameterError(
+                    "gate", f"[{t_open!r}, {t_close!r}] s",
+                    f"inside the samples of channel {name!r}, [{t[0]!r}, {t[-1]!r}] s",
+                )
+            times = channel.disc.crossing_times(t, theta)
+            window = times[np.searchsorted(times, t_open, "left") : np.searchsorted(times, t_close, "right")]
+            fires = channel.amplifier.fires(channel.photocell.amplitudes_V(window.size))
+            env.process(_pulses(env, window.tolist(), fires.tolist(), counters[name]))
+        env.run()
+        return CountReading(
+            counts=MappingProxyType({n: int(c.count) for n, c in counters.items()}),
+            marks=MappingProxyType({n: ch.disc.marks for n, ch in self.channels.items()}),
+            gate_open_s=t_open,
+            gate_time_s=duration,
+        )
+
+
+def stand_a_counters(
+    *,
+    marks: tuple[int, int] = (60, 60),
+    phases_rad: tuple[float, float] = (0.0, 0.0),
+    amplitude_noise_rngs: tuple[np.random.Generator | None, np.random.Generator | None] = (None, None),
+) -> SpeedCounters:
+    """Stand A: channels "wheel_1" (disc 13) and "wheel_2" (disc 14), 60 marks each (assumed);
+    the amplitude-noise effect of a channel is on iff its generator is given."""
+    channels = {}
+    for i, name in enumerate(("wheel_1", "wheel_2")):
+        rng = amplitude_noise_rngs[i]
+        noise = None if rng is None else WhiteNoise(DEFAULT_AMPLITUDE_NOISE_STD_V, rng)
+        channels[name] = CounterChannel(StrobeDisc(marks[i], phases_rad[i]), Photocell(amplitude_noise=noise))
+    return SpeedCounters(channels)
