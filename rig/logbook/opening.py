@@ -1,0 +1,67 @@
+"""Open a log for reading: refuse missing, non-HDF5, truncated and foreign files clearly."""
+
+from __future__ import annotations
+
+import contextlib
+import os
+from collections.abc import Iterator
+from pathlib import Path
+
+import h5py
+
+from rig.errors import LogFormatError, ParameterError
+from rig.logbook import layout as L
+from rig.logbook.h5format import shown
+
+
+def as_path(name: str, path: object) -> Path:
+    """``path`` as a :class:`Path`, or a ParameterError naming ``name``."""
+    if not isinstance(path, str | os.PathLike) or str(path) == "":
+        raise ParameterError(name, path, "a file path (str or os.PathLike)")
+    return Path(path)
+
+
+def check_format(handle: h5py.File, *, what: str = "friction-rig log") -> None:
+    """Raise LogFormatError unless the root says ``format = friction-rig-log``, version 1."""
+    where = handle.filename
+    if L.ATTR_FORMAT not in handle.attrs:
+        raise LogFormatError(
+            f"{where}: not a {what}: root attribute {L.ATTR_FORMAT!r} is missing "
+            f"(expected {L.FORMAT_NAME!r}; a foreign HDF5 file?)"
+        )
+    name = handle.attrs[L.ATTR_FORMAT]
+    if name != L.FORMAT_NAME:
+        raise LogFormatError(f"{where}: not a {what}: root attribute 'format' = {shown(name)}, expected {L.FORMAT_NAME!r}")
+    version = handle.attrs.get(L.ATTR_FORMAT_VERSION)
+    if version != L.FORMAT_VERSION:
+        raise LogFormatError(
+            f"{where}: root attribute 'format_version' = {shown(version)}; this friction-rig reads version {L.FORMAT_VERSION}"
+        )
+
+
+@contextlib.contextmanager
+def open_hdf5(path: object, *, what: str = "friction-rig log") -> Iterator[h5py.File]:
+    """Open ``path`` read-only after checking it is an HDF5 file of our format.
+
+    Any low-level read error inside the block (a damaged file) becomes a LogFormatError naming
+    the file.
+    """
+    file = as_path("path", path)
+    if not file.is_file():
+        raise LogFormatError(f"{file}: no such log file")
+    try:
+        handle = h5py.File(file, "r")
+    except OSError as err:
+        kind = "a truncated or damaged HDF5 file" if h5py.is_hdf5(file) else "not an HDF5 file"
+        raise LogFormatError(f"{file}: {kind} ({err})") from None
+    with handle:
+        check_format(handle, what=what)
+        try:
+            yield handle
+        except (OSError, RuntimeError) as err:
+            raise LogFormatError(f"{file}: damaged HDF5 file, reading failed ({err})") from None
+
+
+def open_log(path: object) -> contextlib.AbstractContextManager[h5py.File]:
+    """Open a finished log read-only (see :func:`open_hdf5`)."""
+    return open_hdf5(path)

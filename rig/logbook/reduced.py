@@ -1,0 +1,96 @@
+"""Write the reduction's table back into a log (``/reduced``, atomically) and read it."""
+
+from __future__ import annotations
+
+import shutil
+from collections.abc import Mapping
+
+import h5py
+import numpy as np
+import pandas as pd
+
+from rig.errors import LogFormatError, ParameterError
+from rig.logbook import atomic, h5format
+from rig.logbook import layout as L
+from rig.logbook.opening import as_path, open_log
+from rig.logbook.units import UNIT_RULE, is_unit, safe_unit
+
+
+def _column_units(table: pd.DataFrame, units: Mapping[str, str] | None) -> dict[str, str]:
+    """Unit of every column; each column name must end in ``_<safe unit>``."""
+    if units is None:
+        units = table.attrs.get("units")
+    if not isinstance(units, Mapping):
+        raise ParameterError("units", units, "a mapping column -> unit (or table.attrs['units'])")
+    out = {}
+    for column in table.columns:
+        if not isinstance(column, str) or column not in units:
+            raise ParameterError("units", sorted(map(str, units)), f"a unit for every column, including {column!r}")
+        unit = units[column]
+        if not is_unit(unit):
+            raise ParameterError(f"units[{column!r}]", unit, UNIT_RULE)
+        suffix = "_" + safe_unit(unit)
+        if not column.endswith(suffix) or column == suffix or "/" in column:
+            raise ParameterError("column", column, f"a name ending in {suffix!r} (<name>_<unit>, unit {unit!r})")
+        if table[column].dtype.kind not in "iuf":
+            raise ParameterError(f"table[{column!r}].dtype", str(table[column].dtype), "an integer or float column")
+        out[column] = unit
+    return out
+
+
+def write_reduced(path: object, table: pd.DataFrame, units: Mapping[str, str] | None = None) -> None:
+    """Store ``table`` as ``/reduced`` in the log ``path``, replacing any earlier one, atomically.
+
+    ``units``: {column: unit} (default ``table.attrs["units"]``); every column must be numeric and
+    named ``<name>_<safe unit>``; the (integer) index is stored too. NaN marks a value that could
+    not be reduced. The log is copied, changed and renamed over the original.
+    """
+    log = as_path("path", path)
+    if not isinstance(table, pd.DataFrame):
+        raise ParameterError("table", type(table).__name__, "a pandas DataFrame")
+    if table.index.dtype.kind not in "iu":
+        raise ParameterError("table.index.dtype", str(table.index.dtype), "an integer index (e.g. the point index)")
+    if not table.columns.is_unique:
+        raise ParameterError("table.columns", list(table.columns), "unique column names")
+    column_units = _column_units(table, units)
+    with open_log(log):
+        pass
+    with atomic.replace_atomically(log, atomic.temporary_path(log.parent, log.name)) as tmp:
+        shutil.copyfile(log, tmp)
+        shutil.copymode(log, tmp)
+        with h5py.File(tmp, "r+") as handle:
+            if L.REDUCED_GROUP in handle:
+                del handle[L.REDUCED_GROUP]
+            _write_table(handle.create_group(L.REDUCED_GROUP), table, column_units)
+
+
+def _write_table(group: h5py.Group, table: pd.DataFrame, units: Mapping[str, str]) -> None:
+    group.attrs[L.ATTR_COLUMNS] = list(table.columns)
+    group.attrs[L.ATTR_INDEX_NAME] = "" if table.index.name is None else str(table.index.name)
+    group.create_dataset(L.REDUCED_INDEX_DATASET, data=table.index.to_numpy(dtype=np.int64))
+    for column in table.columns:
+        ds = group.create_dataset(column, data=table[column].to_numpy())
+        ds.attrs[L.ATTR_UNITS] = units[column]
+
+
+def read_reduced(path: object) -> pd.DataFrame:
+    """The table stored by :func:`write_reduced` (``attrs["units"]`` = {column: unit})."""
+    with open_log(path) as handle:
+        if L.REDUCED_GROUP not in handle:
+            raise LogFormatError(f"{path}: the log has no {L.REDUCED_GROUP!r} group (not reduced yet)")
+        group = h5format.subgroup(handle, L.REDUCED_GROUP)
+        columns = [str(c) for c in h5format.attr(group, L.ATTR_COLUMNS)]
+        index_ds = group.get(L.REDUCED_INDEX_DATASET)
+        if not isinstance(index_ds, h5py.Dataset) or index_ds.ndim != 1:
+            raise h5format.fail(group, f"dataset {L.REDUCED_INDEX_DATASET!r} is missing")
+        index = pd.Index(index_ds[()], name=h5format.text_attr(group, L.ATTR_INDEX_NAME) or None)
+        data, units = {}, {}
+        for column in columns:
+            ds = group.get(column)
+            if not isinstance(ds, h5py.Dataset) or ds.shape != index.shape:
+                raise h5format.fail(group, f"column {column!r} is missing or not {len(index)} long")
+            data[column] = ds[()]
+            units[column] = h5format.units_of(ds)
+        table = pd.DataFrame(data, index=index, columns=columns)
+        table.attrs["units"] = units
+        return table

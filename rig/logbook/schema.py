@@ -1,0 +1,75 @@
+"""Optional schema check: the channels, settings, readings and counters a consumer needs, with
+their units, in every point of a log."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+
+from rig.errors import LogFormatError, ParameterError
+from rig.logbook import h5format
+from rig.logbook import layout as L
+from rig.logbook.opening import open_log
+from rig.logbook.units import check_name, check_unit
+
+
+def _units_map(kind: str, given: object) -> Mapping[str, str]:
+    if not isinstance(given, Mapping):
+        raise ParameterError(kind, given, "a mapping of name -> unit")
+    return MappingProxyType({check_name(f"{kind} name", k): check_unit(f"{kind}[{k!r}]", u) for k, u in given.items()})
+
+
+@dataclass(frozen=True)
+class LogSchema:
+    """Required content of every point: ``{name: unit}`` per kind, and counter names."""
+
+    channels: Mapping[str, str] = field(default_factory=dict)
+    settings: Mapping[str, str] = field(default_factory=dict)
+    readings: Mapping[str, str] = field(default_factory=dict)
+    counters: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        for kind in ("channels", "settings", "readings"):
+            object.__setattr__(self, kind, _units_map(kind, getattr(self, kind)))
+        if isinstance(self.counters, str):
+            raise ParameterError("counters", self.counters, "a sequence of counter names")
+        object.__setattr__(self, "counters", tuple(check_name("counter", c) for c in self.counters))
+
+
+def _check_kind(where: str, group, kind: str, required: Mapping[str, str]) -> None:
+    """Every required name of ``kind`` is present in ``group`` with its units."""
+    singular = kind[:-1]
+    for name, unit in required.items():
+        if name not in group:
+            present = ", ".join(group.keys()) or "none"
+            raise LogFormatError(f"{where}: {singular} {name!r} is missing (present: {present})")
+        found = h5format.units_of(group[name])
+        if found != unit:
+            raise LogFormatError(f"{where}: {singular} {name!r} has units {found!r}, expected {unit!r}")
+
+
+def check_log(path: object, schema: LogSchema | None = None) -> list[int]:
+    """Check a log completely (every object of every point is decoded) and, if given, that
+    every point holds what ``schema`` requires. Returns the point indices; raises LogFormatError
+    naming the file, the point and what is wrong.
+    """
+    if schema is not None and not isinstance(schema, LogSchema):
+        raise ParameterError("schema", schema, "a LogSchema or None")
+    with open_log(path) as handle:
+        h5format.read_metadata(handle)
+        indices = []
+        for index, group in h5format.point_groups(handle):
+            point = h5format.read_point(group)
+            indices.append(index)
+            if schema is None:
+                continue
+            where = f"{path}: point {index}"
+            _check_kind(where, group[L.CHANNELS_GROUP], "channels", schema.channels)
+            _check_kind(where, group[L.SETTINGS_GROUP], "settings", schema.settings)
+            _check_kind(where, group[L.READINGS_GROUP], "readings", schema.readings)
+            present = {} if point.counters is None else point.counters.counters
+            for name in schema.counters:
+                if name not in present:
+                    raise LogFormatError(f"{where}: counter {name!r} is missing (present: {', '.join(present) or 'none'})")
+        return indices
