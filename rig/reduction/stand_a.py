@@ -1,0 +1,203 @@
+"""Stand A chain: counts + calibrated readings -> l/a, c/a, alpha', mu_v, mu_T with uncertainties.
+
+Per operating point (seed notes 2, "Implementation of the chain"):
+    i_k = N2 z1/(N1 z2), w1 = 2 pi N1/(z1 T)                         counters over a common gate
+    (c, l) from i_k, eqs. (29)-(31); l/a, c/a                          rig.wheel_kinematics
+    v/w0 = r1/(sin alpha1 + i_k); alpha' = 10 mu (b/a)(v/w0)/R_x       eq. (21), line contact
+    F_y = [(s - s0)/S + e_w] (102 mm/R_v)                              dynamometer 10, eq. (33)
+    (nu_T, nu_v, nu_0) = coefficients(l/a, c/a, alpha')               contact model (any)
+    mu_v = F_y/(F_N nu_v), mu_T = [T2 + F_y(Delta h - c)]/(F_N D)      eqs. (33), (35)
+iterated over mu in alpha' (rig.reduction.iteration; mu_v is used, mu_T when mu_v is not
+reportable). Guards (hard cases 2, 8): fewer than min_counts counts or a vanishing spin -> all
+outputs NaN with the reason; |nu_v| < nu_min -> mu_v NaN; |D|/a < denominator_min -> mu_T NaN.
+Configuration errors (marks, gate time, b/a, geometry) raise ParameterError instead.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+
+from rig import validate
+from rig.errors import ParameterError
+from rig.reduction import equations as eq
+from rig.reduction.geometry import StandAGeometry
+from rig.reduction.iteration import ReductionSettings, solve_mu
+from rig.reduction.readings import ForceCalibration, Measured
+from rig.reduction.result import Evaluation, ReducedPoint, reduce_point
+from rig.reduction.uncertainty import Covariance, Distribution, InputQuantity, InputSet, rectangular_u
+from rig.wheel_kinematics import SpinTooSmallError
+
+Coefficients = Callable[[float, float, float], tuple[float, float, float]]
+
+OUTPUTS = (
+    "i_k", "omega_1_rad_s", "spin_rad_s", "l_m", "c_m", "l_over_a", "c_over_a", "F_y_N",
+    "alpha_prime", "nu_T", "nu_v", "nu_0", "mu_v", "mu_T",
+)
+COUNT_HALF_WIDTH = 1.0  # +-1 count quantisation of a gated counter [count], rectangular
+GEOMETRY_INPUTS = ("l1", "l2", "alpha_1", "delta_h", "a", "r1", "radius_x", "dynamometer_lever", "yoke_lever")
+
+
+@dataclass(frozen=True)
+class StandAReadings:
+    """One operating point of stand A.
+
+    counts_k: counter totals [1] of z_k marks (marks_k) in one common gate; gate_time [s];
+    normal_force F_N [N]; dynamometer_signal [V] with its calibration; brake_moment T2 [N m]
+    from the tangent balance (positive when it resists wheel 2); b_over_a [1] of the contact at
+    this load (the same value the caller binds into the coefficients).
+    """
+
+    counts_1: int
+    counts_2: int
+    marks_1: int
+    marks_2: int
+    gate_time: Measured
+    normal_force: Measured
+    dynamometer_signal: Measured
+    dynamometer: ForceCalibration
+    brake_moment: Measured
+    b_over_a: float
+
+    def __post_init__(self) -> None:
+        validate.integer("counts_1", self.counts_1, 0)
+        validate.integer("counts_2", self.counts_2, 0)
+        validate.integer("marks_1", self.marks_1, 1)
+        validate.integer("marks_2", self.marks_2, 1)
+        validate.number("gate_time", self.gate_time.value, 0.0, lo_open=True)
+        validate.number("normal_force", self.normal_force.value, 0.0, lo_open=True)
+        validate.number("b_over_a", self.b_over_a, 0.0, lo_open=True)
+
+
+def input_set(
+    readings: StandAReadings, geometry: StandAGeometry, geometry_u: Mapping[str, float] | None = None
+) -> InputSet:
+    """The inputs with their uncertainties and sources (instruments) for the budget.
+
+    geometry_u: optional standard uncertainties of geometry constants, keyed by field name
+    (one of GEOMETRY_INPUTS) in the field's unit; constants without one are exact.
+    """
+    geometry_u = dict(geometry_u or {})
+    validate.known_keys("geometry constant", geometry_u, GEOMETRY_INPUTS)
+    r, cal = readings, readings.dynamometer
+    u_count = rectangular_u(COUNT_HALF_WIDTH)
+    rect = Distribution.RECTANGULAR
+    quantities = [
+        InputQuantity("N1", float(r.counts_1), u_count, "1", "counter 1 (wheel 1)", rect),
+        InputQuantity("N2", float(r.counts_2), u_count, "1", "counter 2 (wheel 2)", rect),
+        InputQuantity("T_gate_s", r.gate_time.value, r.gate_time.u, "s", "timer"),
+        InputQuantity("F_N_N", r.normal_force.value, r.normal_force.u, "N", "pressing force"),
+        InputQuantity("dyn_signal_V", r.dynamometer_signal.value, r.dynamometer_signal.u, "V", "dynamometer signal"),
+        InputQuantity("dyn_sensitivity_V_per_N", cal.sensitivity, cal.u_sensitivity, "V/N", "dynamometer calibration"),
+        InputQuantity("dyn_offset_V", cal.offset, cal.u_offset, "V", "dynamometer calibration"),
+        InputQuantity("dyn_weights_N", 0.0, cal.u_weights, "N", "calibration weights"),
+        InputQuantity("T2_N_m", r.brake_moment.value, r.brake_moment.u, "N m", "tangent balance"),
+    ]
+    units = {f.name: f.metadata["unit"] for f in dataclasses.fields(geometry)}
+    for name, u in geometry_u.items():
+        quantities.append(InputQuantity(f"geom_{name}", getattr(geometry, name), u, units[name], "geometry"))
+    covariances = ()
+    if cal.covariance != 0.0:
+        covariances = (Covariance("dyn_sensitivity_V_per_N", "dyn_offset_V", cal.covariance),)
+    return InputSet(tuple(quantities), covariances)
+
+
+def evaluate(
+    values: Mapping[str, float],
+    mu_start: float,
+    *,
+    readings: StandAReadings,
+    geometry: StandAGeometry,
+    coefficients: Coefficients,
+    settings: ReductionSettings,
+) -> Evaluation:
+    """The chain at one set of input values (names as in :func:`input_set`)."""
+    g = dataclasses.replace(
+        geometry, **{k[5:]: v for k, v in values.items() if k.startswith("geom_")}
+    )
+    out = dict.fromkeys(OUTPUTS, math.nan)
+    force_dyn = eq.force_from_signal(
+        values["dyn_signal_V"], values["dyn_sensitivity_V_per_N"], values["dyn_offset_V"]
+    ) + values["dyn_weights_N"]
+    out["F_y_N"] = f_y = eq.lateral_force_from_dynamometer(force_dyn, g.dynamometer_lever, g.yoke_lever)
+    kinematic = tuple(name for name in OUTPUTS if name != "F_y_N")
+    n1, n2 = values["N1"], values["N2"]
+    if min(n1, n2) < settings.min_counts:
+        why = f"counts N1 = {n1:g}, N2 = {n2:g} below min_counts = {settings.min_counts} (stall, hard case 2)"
+        return Evaluation(out, dict.fromkeys(kinematic, why), math.nan, 0)
+    i_k = eq.ratio_from_counts(n1, n2, readings.marks_1, readings.marks_2)
+    omega_1 = eq.angular_speed_from_counts(n1, readings.marks_1, values["T_gate_s"])
+    try:
+        c, l = eq.stand_a_rolling_point(i_k, g.alpha_1, g.l1, g.l2, g.delta_h)
+    except SpinTooSmallError as error:
+        return Evaluation(out, dict.fromkeys(kinematic, str(error)), math.nan, 0)
+    sin_a1 = math.sin(g.alpha_1)
+    f_n, t2 = values["F_N_N"], values["T2_N_m"]
+    alpha_per_mu = eq.alpha_prime_line_contact(1.0, readings.b_over_a, g.r1 / (sin_a1 + i_k), g.radius_x)
+    out.update(
+        i_k=i_k, omega_1_rad_s=omega_1, spin_rad_s=omega_1 * (sin_a1 + i_k), l_m=l, c_m=c,
+        l_over_a=l / g.a, c_over_a=c / g.a,
+    )
+
+    def estimate(mu: float) -> tuple[float, dict[str, float], str]:
+        alpha = alpha_per_mu * mu
+        nu_t, nu_v, nu_0 = coefficients(l / g.a, c / g.a, alpha)
+        state = dict(alpha_prime=alpha, nu_T=nu_t, nu_v=nu_v, nu_0=nu_0, mu_v=math.nan, mu_T=math.nan)
+        reasons = {}
+        if abs(nu_v) >= settings.nu_min:
+            state["mu_v"] = eq.mu_v(f_y, f_n, nu_v)
+        else:
+            reasons["mu_v"] = f"|nu_v| = {abs(nu_v):.3g} < nu_min = {settings.nu_min:g} (c ~ 0, hard case 8)"
+        denominator = eq.mu_t_denominator(nu_t, nu_0, l, g.l2, g.a)
+        if abs(denominator) >= settings.denominator_min * g.a:
+            state["mu_T"] = eq.mu_t(t2, f_n, f_y, nu_t, nu_0, l, c, g.l2, g.delta_h, g.a)
+        else:
+            reasons["mu_T"] = (
+                f"|D|/a = {abs(denominator) / g.a:.3g} < denominator_min = {settings.denominator_min:g} "
+                "in eq. (35) (hard case 8)"
+            )
+        state["reasons"] = reasons
+        for name in ("mu_v", "mu_T"):
+            if math.isfinite(state[name]) and state[name] > 0.0:
+                return state[name], state, ""
+        return math.nan, state, "; ".join(reasons.values()) or "no positive friction estimate"
+
+    fixed = solve_mu(estimate, dataclasses.replace(settings, mu_start=mu_start))
+    reasons = dict(fixed.state.pop("reasons")) if fixed.state else {}
+    if fixed.reason:
+        for name in ("alpha_prime", "nu_T", "nu_v", "nu_0", "mu_v", "mu_T"):
+            reasons.setdefault(name, fixed.reason)
+    else:
+        out.update(fixed.state)
+    return Evaluation(out, reasons, fixed.mu, fixed.iterations)
+
+
+def reduce(
+    readings: StandAReadings,
+    coefficients: Coefficients,
+    geometry: StandAGeometry | None = None,
+    settings: ReductionSettings | None = None,
+    geometry_u: Mapping[str, float] | None = None,
+) -> ReducedPoint:
+    """Reduce one stand-A operating point (values, standard uncertainties, budget, reasons).
+
+    coefficients(l/a, c/a, alpha') -> (nu_T, nu_v, nu_0) with b/a, shape and model bound by
+    the caller (e.g. functools.partial over rig.contact.solve.solve); geometry defaults to the
+    seed-notes stand A (rig.reduction.geometry); settings to ReductionSettings().
+    """
+    if not callable(coefficients):
+        raise ParameterError(
+            "coefficients", coefficients, "a callable (l_over_a, c_over_a, alpha) -> (nu_T, nu_v, nu_0)"
+        )
+    geometry = StandAGeometry() if geometry is None else geometry
+    settings = ReductionSettings() if settings is None else settings
+    inputs = input_set(readings, geometry, geometry_u)
+
+    def chain(values: Mapping[str, float], mu_start: float) -> Evaluation:
+        return evaluate(
+            values, mu_start, readings=readings, geometry=geometry, coefficients=coefficients, settings=settings
+        )
+
+    return reduce_point(chain, inputs, settings.mu_start, settings.relative_step)
