@@ -13,11 +13,12 @@ from rig.errors import LogFormatError, ParameterError
 from rig.logbook import atomic, h5format
 from rig.logbook import layout as L
 from rig.logbook.opening import as_path, open_log
-from rig.logbook.units import UNIT_RULE, is_unit, safe_unit
+from rig.logbook.units import DIMENSIONLESS, UNIT_RULE, column_name, is_unit, safe_unit
 
 
 def _column_units(table: pd.DataFrame, units: Mapping[str, str] | None) -> dict[str, str]:
-    """Unit of every column; each column name must end in ``_<safe unit>``."""
+    """Unit of every column; a dimensional column's name must end in ``_<safe unit>``; text
+    columns (e.g. the reason a value could not be reduced) have unit "1"."""
     if units is None:
         units = table.attrs.get("units")
     if not isinstance(units, Mapping):
@@ -29,13 +30,21 @@ def _column_units(table: pd.DataFrame, units: Mapping[str, str] | None) -> dict[
         unit = units[column]
         if not is_unit(unit):
             raise ParameterError(f"units[{column!r}]", unit, UNIT_RULE)
-        suffix = "_" + safe_unit(unit)
-        if not column.endswith(suffix) or column == suffix or "/" in column:
-            raise ParameterError("column", column, f"a name ending in {suffix!r} (<name>_<unit>, unit {unit!r})")
-        if table[column].dtype.kind not in "iuf":
-            raise ParameterError(f"table[{column!r}].dtype", str(table[column].dtype), "an integer or float column")
+        if column_name(column, "1") != column or "/" in column:
+            raise ParameterError("column", column, "an identifier-safe name")
+        if unit != DIMENSIONLESS:
+            suffix = "_" + safe_unit(unit)
+            if not column.endswith(suffix) or column == suffix:
+                raise ParameterError("column", column, f"a name ending in {suffix!r} (<name>_<unit>, unit {unit!r})")
+        kind = table[column].dtype.kind
+        if kind not in "iuf" and not (unit == DIMENSIONLESS and _is_text(table[column])):
+            raise ParameterError(f"table[{column!r}].dtype", str(table[column].dtype), "numeric, or text with unit '1'")
         out[column] = unit
     return out
+
+
+def _is_text(column: pd.Series) -> bool:
+    return bool(column.map(lambda v: isinstance(v, str)).all())
 
 
 def write_reduced(path: object, table: pd.DataFrame, units: Mapping[str, str] | None = None) -> None:
@@ -69,7 +78,11 @@ def _write_table(group: h5py.Group, table: pd.DataFrame, units: Mapping[str, str
     group.attrs[L.ATTR_INDEX_NAME] = "" if table.index.name is None else str(table.index.name)
     group.create_dataset(L.REDUCED_INDEX_DATASET, data=table.index.to_numpy(dtype=np.int64))
     for column in table.columns:
-        ds = group.create_dataset(column, data=table[column].to_numpy())
+        values = table[column]
+        if values.dtype.kind in "iuf":
+            ds = group.create_dataset(column, data=values.to_numpy())
+        else:
+            ds = group.create_dataset(column, data=values.astype(str).tolist(), dtype=h5py.string_dtype())
         ds.attrs[L.ATTR_UNITS] = units[column]
 
 
@@ -89,7 +102,7 @@ def read_reduced(path: object) -> pd.DataFrame:
             ds = group.get(column)
             if not isinstance(ds, h5py.Dataset) or ds.shape != index.shape:
                 raise h5format.fail(group, f"column {column!r} is missing or not {len(index)} long")
-            data[column] = ds[()]
+            data[column] = ds.asstr()[()] if h5py.check_string_dtype(ds.dtype) else ds[()]
             units[column] = h5format.units_of(ds)
         table = pd.DataFrame(data, index=index, columns=columns)
         table.attrs["units"] = units

@@ -49,6 +49,9 @@ def check_name(kind: str, name: object) -> str:
     return name  # type: ignore[return-value]
 
 
+DIMENSIONLESS = "1"
+
+
 def safe_unit(unit: str) -> str:
     """Identifier-safe form of a unit: ``"N m"`` -> ``"N_m"``, ``"rad/s"`` -> ``"rad_s"``, ``"1/rev"`` -> ``"per_rev"``."""
     check_unit("unit", unit)
@@ -58,5 +61,7 @@ def safe_unit(unit: str) -> str:
 
 
 def column_name(name: str, unit: str) -> str:
-    """DataFrame column name carrying its unit: ``column_name("T2", "N m") == "T2_N_m"``."""
-    return f"{check_name('name', name)}_{safe_unit(unit)}"
+    """DataFrame column name carrying its unit: ``column_name("T2", "N m") == "T2_N_m"``;
+    dimensionless quantities (unit "1") keep their bare name: ``column_name("mu_T", "1") == "mu_T"``."""
+    check_name("name", name)
+    return name if unit == DIMENSIONLESS else f"{name}_{safe_unit(unit)}"

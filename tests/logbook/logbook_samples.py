@@ -125,7 +125,7 @@ def main(mode: str, path: str, marker: str) -> None:
             _hang(signal, group.file)
         reduced._write_table = write_table
         import pandas as pd
-        reduced.write_reduced(log, pd.DataFrame({"mu_1": [0.4]}), {"mu_1": "1"})
+        reduced.write_reduced(log, pd.DataFrame({"mu": [0.4]}), {"mu": "1"})
     elif mode == "free":  # no hook: the parent kills at a moment of its choice
         signal.touch()
         writer_ = LogWriter(log, metadata())

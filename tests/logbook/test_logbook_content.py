@@ -20,7 +20,7 @@ from rig.logbook.units import UNIT_PATTERN, is_name, is_unit
         ("T2", "N m", "T2_N_m"),
         ("omega", "rad/s", "omega_rad_s"),
         ("a", "m/s^2", "a_m_s2"),
-        ("mu", "1", "mu_1"),
+        ("mu", "1", "mu"),  # dimensionless: bare name
         ("z", "1/rev", "z_per_rev"),
         ("gain", "N/V", "gain_N_V"),
         ("N1", "count", "N1_count"),

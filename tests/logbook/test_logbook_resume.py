@@ -148,12 +148,12 @@ def test_write_reduced_failing_half_way_leaves_log(
     path.write_bytes(reference.read_bytes())
 
     def write_then_fail(group, table, units):
-        group.create_dataset("mu_1", data=[0.4])
+        group.create_dataset("mu", data=[0.4])
         _fail_half_way()
 
     monkeypatch.setattr(reduced, "_write_table", write_then_fail)
     with pytest.raises(RuntimeError, match="disk full"):
-        write_reduced(path, pd.DataFrame({"mu_1": [0.4]}), {"mu_1": "1"})
+        write_reduced(path, pd.DataFrame({"mu": [0.4]}), {"mu": "1"})
     assert path.read_bytes() == reference.read_bytes()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["run.h5"]
     with pytest.raises(LogFormatError, match="no 'reduced' group"):
@@ -180,5 +180,5 @@ def test_log_gets_ordinary_file_permissions(tmp_path: Path) -> None:
     os.umask(umask)
     assert stat.S_IMODE(path.stat().st_mode) == 0o666 & ~umask
     path.chmod(0o640)
-    write_reduced(path, pd.DataFrame({"mu_1": [0.4]}), {"mu_1": "1"})
+    write_reduced(path, pd.DataFrame({"mu": [0.4]}), {"mu": "1"})
     assert stat.S_IMODE(path.stat().st_mode) == 0o640

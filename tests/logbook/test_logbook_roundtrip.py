@@ -57,8 +57,8 @@ def test_readings_and_calibration_tables(log: Path) -> None:
     assert readings.attrs["units"] == {"F_y_N": "N", "T2_N_m": "N m"}
     np.testing.assert_allclose(readings["T2_N_m"], 0.35 + 0.01 * np.arange(samples.N_POINTS))
     calibration = lb.read_calibration(log)
-    assert list(calibration.columns) == ["dynamometer_gain_N_V", "dynamometer_lever_ratio_1"]
-    assert calibration.loc[2, "dynamometer_lever_ratio_1"] == 102 / 42.5
+    assert list(calibration.columns) == ["dynamometer_gain_N_V", "dynamometer_lever_ratio"]
+    assert calibration.loc[2, "dynamometer_lever_ratio"] == 102 / 42.5
 
 
 def test_counters_table_gives_back_the_speeds(log: Path) -> None:
@@ -87,7 +87,7 @@ def test_channel_tables(log: Path) -> None:
 
 def test_truth_table(log: Path) -> None:
     truth = read_truth(log)
-    assert truth.attrs["units"] == {"F_x_N": "N", "c_m": "m", "l_m": "m", "mu_1": "1"}
+    assert truth.attrs["units"] == {"F_x_N": "N", "c_m": "m", "l_m": "m", "mu": "1"}
     np.testing.assert_allclose(truth["F_x_N"], 30.0 + np.arange(samples.N_POINTS))
 
 
@@ -95,10 +95,10 @@ def test_reduced_round_trip(log: Path, tmp_path: Path) -> None:
     path = tmp_path / "copy.h5"
     path.write_bytes(log.read_bytes())
     reduced = pd.DataFrame(
-        {"mu_T_1": [0.41, np.nan, 0.39], "l_over_a_1": [0.0, 0.5, 1.0], "F_y_N": [4.1, 4.0, 3.9]},
+        {"mu_T": [0.41, np.nan, 0.39], "l_over_a": [0.0, 0.5, 1.0], "F_y_N": [4.1, 4.0, 3.9]},
         index=pd.Index([0, 1, 2], name="point"),
     )
-    reduced.attrs["units"] = {"mu_T_1": "1", "l_over_a_1": "1", "F_y_N": "N"}
+    reduced.attrs["units"] = {"mu_T": "1", "l_over_a": "1", "F_y_N": "N"}
     lb.write_reduced(path, reduced)
     back = lb.read_reduced(path)
     pd.testing.assert_frame_equal(back, reduced)
@@ -106,18 +106,18 @@ def test_reduced_round_trip(log: Path, tmp_path: Path) -> None:
     lb.write_reduced(path, reduced.iloc[:1], units=reduced.attrs["units"])  # replaces the earlier table
     assert len(lb.read_reduced(path)) == 1
     assert samples.dump(path).keys() - samples.dump(log).keys() == {
-        "reduced", "reduced/_index", "reduced/mu_T_1", "reduced/l_over_a_1", "reduced/F_y_N"}
+        "reduced", "reduced/_index", "reduced/mu_T", "reduced/l_over_a", "reduced/F_y_N"}
 
 
 @pytest.mark.parametrize(
     ("table", "units", "message"),
     [
-        (pd.DataFrame({"mu": [0.4]}), {"mu": "1"}, "column = 'mu' .* ending in '_1'"),
+        (pd.DataFrame({"F_y": [0.4]}), {"F_y": "N"}, "column = 'F_y' .* ending in '_N'"),
         (pd.DataFrame({"T2_N": [0.4]}), {"T2_N": "N m"}, "ending in '_N_m'"),
-        (pd.DataFrame({"mu_1": [0.4]}), {}, "a unit for every column"),
-        (pd.DataFrame({"mu_1": [0.4]}), None, "units = None"),
-        (pd.DataFrame({"mu_1": ["a"]}), {"mu_1": "1"}, "dtype"),
-        (pd.DataFrame({"mu_1": [0.4]}, index=["a"]), {"mu_1": "1"}, "integer index"),
+        (pd.DataFrame({"mu": [0.4]}), {}, "a unit for every column"),
+        (pd.DataFrame({"mu": [0.4]}), None, "units = None"),
+        (pd.DataFrame({"F_y_N": ["a"]}), {"F_y_N": "N"}, "dtype"),
+        (pd.DataFrame({"mu": [0.4]}, index=["a"]), {"mu": "1"}, "integer index"),
     ],
 )
 def test_write_reduced_refuses_tables_without_units(log: Path, table, units, message: str) -> None:
