@@ -2,8 +2,9 @@
 
 Dimensionless: lengths in units of a (half length along the contact line y), pressure in units
 of p0. The grid has n cells across 2a (y) and nx cells across 2b (x, rolling direction), plus
-``GHOST_COLUMNS`` empty columns upstream of the contact (x < -b) where the material that is
-about to enter the contact carries the displacement of the field outside it.
+``GHOST_COLUMNS`` empty columns on each side of the contact, where the material that is about
+to enter it (from x < -b, or from x > b when the rolling reverses) carries the displacement of
+the field outside.
 """
 
 from __future__ import annotations
@@ -58,7 +59,7 @@ def cells_along_rolling(n: int, b_over_a: float) -> int:
 
 @dataclass(frozen=True, eq=False)
 class Grid:
-    """Cells of an (nx + GHOST_COLUMNS) x ny rectangle; index [i, j], i along x, j along y.
+    """Cells of an (nx + 2 GHOST_COLUMNS) x ny rectangle; index [i, j], i along x, j along y.
 
     x, y: cell-centre coordinates [a]; hx, hy: cell sizes [a]; active: cells whose centre lies
     inside the contact (so that the cells' union has the contact's area to O(h^2)); p: p/p0
@@ -113,12 +114,13 @@ def make_grid(shape: str, b_over_a: float, n: int) -> Grid:
     n = validate.integer("n", n, 4, 4096)
     nx = cells_along_rolling(n, b)
     hx, hy = 2.0 * b / nx, 2.0 / n
-    x = -b + hx * (np.arange(nx + GHOST_COLUMNS) - GHOST_COLUMNS + 0.5)
+    x = -b + hx * (np.arange(nx + 2 * GHOST_COLUMNS) - GHOST_COLUMNS + 0.5)
     y = -1.0 + hy * (np.arange(n) + 0.5)
     s = (np.arange(_SUBSAMPLES) + 0.5) / _SUBSAMPLES - 0.5
     xs = x[:, None, None, None] + hx * s[None, None, :, None]
     ys = y[None, :, None, None] + hy * s[None, None, None, :]
     inside = pressure(shape, b, x[:, None], y[None, :]) > 0.0
     inside[:GHOST_COLUMNS] = False
+    inside[-GHOST_COLUMNS:] = False
     p = np.where(inside, pressure(shape, b, xs, ys).mean(axis=(2, 3)), 0.0)
     return Grid(shape, b, nx, n, hx, hy, x, y, p, inside)

@@ -88,6 +88,12 @@ class Discretisation:
             return t
         return t + self.inertia.layer_force(u_full, self.grid, self.op)
 
+    def apply(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The linear part of the steady law: (q(t), elastic slip(t)); s = s_g + the latter."""
+        u = self.displacement(t)
+        q = self.interface_traction(t, u)
+        return q, self.elastic_slip(q, u)
+
     def elastic_slip(self, q: np.ndarray, u_full: np.ndarray) -> np.ndarray:
         """(U_c - U_up)/hx of the displacement a material point carries (eqs. 8, 10)."""
         du = u_full[:, self.idx] - u_full[:, self.up]
@@ -101,19 +107,21 @@ class _Preconditioner:
     cell to its upstream neighbour (solved exactly, sparse LU), and Kc^-1 the circulant inverse
     of the influence operator restricted to the contact (Vollebregt's FFT preconditioner idea)."""
 
-    def __init__(self, disc: Discretisation, rho: float) -> None:
+    def __init__(self, disc: Discretisation, rho: float, *, upwind: bool = True) -> None:
+        """upwind: the steady law couples a cell to its upstream neighbour (U_c - U_up); the
+        transient law of one rolling step does not (the carried displacement is known)."""
         grid = disc.grid
         n = disc.idx.size
         position = -np.ones(grid.p.size, dtype=int)
         position[disc.idx] = np.arange(n)
-        upstream = position[disc.up]
+        upstream = position[disc.up] if upwind else -np.ones(n, dtype=int)
         self.n = n
         self.disc = disc
         self.has_up = np.flatnonzero(upstream >= 0)
         self.up_pos = upstream[self.has_up]
         k0 = disc.op.self_term[0]
         self.radial = 1.0 / k0
-        self.tangential = disc.psi * rho / grid.hx
+        self.tangential = disc.psi * rho / (grid.hx if upwind else 1.0)
 
     def factor(self, zhat: np.ndarray, ratio: np.ndarray, inside: np.ndarray) -> LinearOperator:
         n = self.n
@@ -157,12 +165,11 @@ def solve_grid(grid: Grid, poisson: float, creepage: Creepage, effects: ContactE
     t = _fastsim_start(grid, poisson, creepage, r)
     total_newton = total_krylov = 0
     for memory_pass in range(1, MAX_MEMORY_PASSES + 1):
-        t, n_newton, n_krylov = _newton(disc, precond, s_g, r, rho, t)
+        t, n_newton, n_krylov = _newton(disc.apply, s_g, precond, r, rho, t)
         total_newton += n_newton
         total_krylov += n_krylov
-        u = disc.displacement(t)
-        q = disc.interface_traction(t, u)
-        s = s_g + disc.elastic_slip(q, u)
+        q, elastic = disc.apply(t)
+        s = s_g + elastic
         stick = np.hypot(q[0], q[1]) < r * (1.0 - 1e-9)
         if static is None:
             break
@@ -195,9 +202,7 @@ def solve_full_stick(grid: Grid, poisson: float, creepage: Creepage, effects: Co
     preconditioner = _Preconditioner(disc, rho).factor(np.zeros((2, n)), np.ones(n), inside)
 
     def operator(v):
-        dt = v.reshape(2, n)
-        du = disc.displacement(dt)
-        return disc.elastic_slip(disc.interface_traction(dt, du), du).ravel()
+        return disc.apply(v.reshape(2, n))[1].ravel()
 
     t, info = gmres(
         LinearOperator((2 * n, 2 * n), matvec=operator, dtype=float), -s_g.ravel(),
@@ -216,16 +221,16 @@ def _fastsim_start(grid: Grid, poisson: float, creepage: Creepage, r: np.ndarray
     return grid.gather(fastsim.march(grid, fastsim.slip_increments(grid, creepage), grid.scatter(r), flex))
 
 
-def _newton(disc: Discretisation, precond: _Preconditioner, s_g, r, rho, t0):
-    """Semi-smooth Newton-Krylov for F(t) = q - P_r(q - rho s) = 0; returns (t, iterations, Krylov its)."""
+def _newton(apply, s0: np.ndarray, precond: _Preconditioner, r: np.ndarray, rho: float, t0: np.ndarray):
+    """Semi-smooth Newton-Krylov for F(t) = q - P_r(q - rho s) = 0 of an affine law
+    (q, s - s0) = apply(t); returns (t, Newton iterations, Krylov iterations)."""
     n = r.size
     scale = max(float(np.max(r)), 1e-300)
     tol = NEWTON_TOL * scale
 
     def evaluate(t):
-        u = disc.displacement(t)
-        q = disc.interface_traction(t, u)
-        z = q - rho * (s_g + disc.elastic_slip(q, u))
+        q, a = apply(t)
+        z = q - rho * (s0 + a)
         pz, zn, inside = project(z, r)
         return q - pz, z, zn, inside
 
@@ -243,10 +248,8 @@ def _newton(disc: Discretisation, precond: _Preconditioner, s_g, r, rho, t0):
         ratio = np.where(inside, 1.0, r / safe)
 
         def jacobian(v, zhat=zhat, ratio=ratio, inside=inside):
-            dt = v.reshape(2, n)
-            du = disc.displacement(dt)
-            dq = disc.interface_traction(dt, du)
-            dz = dq - rho * disc.elastic_slip(dq, du)
+            dq, da = apply(v.reshape(2, n))
+            dz = dq - rho * da
             radial = zhat[0] * dz[0] + zhat[1] * dz[1]
             dp = np.where(inside, dz, ratio * (dz - zhat * radial))
             return (dq - dp).ravel()
