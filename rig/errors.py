@@ -12,7 +12,21 @@ from collections.abc import Iterable
 
 
 class RigError(Exception):
-    """Base class of every error friction-rig raises on purpose."""
+    """Base class of every error friction-rig raises on purpose.
+
+    Picklable whatever a subclass's constructor takes, so that an error raised in a worker
+    process (parallel sweeps) reaches the caller with its type, message and attributes.
+    """
+
+    def __reduce__(self):
+        return (_rebuild, (type(self), str(self), dict(self.__dict__)))
+
+
+def _rebuild(cls: type, message: str, state: dict) -> RigError:
+    error = cls.__new__(cls)
+    Exception.__init__(error, message)
+    error.__dict__.update(state)
+    return error
 
 
 class ParameterError(RigError, ValueError):
