@@ -59,10 +59,9 @@ def solve(
     c = validate.number("c_over_a", c_over_a)
     l = validate.number("l_over_a", l_over_a)
     nu = validate.number("poisson", poisson, 0.0, 0.5)
-    if alpha == 0.0:
-        creepage = None  # rigid sliding: only the direction of the slip matters
-    else:
-        creepage = Creepage.from_rolling_point(alpha, c, l, nu)
+    creepage = None if alpha == 0.0 else Creepage.from_rolling_point(alpha, c, l, nu)
+    if creepage is not None and not np.isfinite(creepage.phi):
+        creepage = None  # alpha' so small that the spin creepage overflows: rigid sliding
     info = dict(alpha=alpha, c_over_a=c, l_over_a=l)
     return _solve(model, shape, b_over_a, creepage, (c, l), nu, n, effects, info)
 
@@ -103,7 +102,7 @@ def _solve(model, shape, b_over_a, creepage, rolling_point, nu, n, effects, info
     built = ContactEffects.from_keywords(**effects)
     if built.rolling_resistance is not None:
         creepage, rolling_point = built.rolling_resistance.shift(creepage, rolling_point)
-    if creepage is None:  # alpha' = 0: unit spin about C fixes the slip directions
+    if creepage is None:  # alpha' = 0 (or below ~1e-307): unit spin about C fixes the slip directions
         creepage = Creepage(xi=rolling_point[1], eta=-rolling_point[0], phi=1.0)
         rigid_sliding = True
     else:

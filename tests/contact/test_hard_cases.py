@@ -79,3 +79,12 @@ def test_spin_going_to_zero_approaches_the_pure_creepage_result():
     for phi in (1e-3, 1e-6):
         r = solve_creepage("kinematic", shape="ellipse", b_over_a=1.0, xi=0.5, eta=0.0, phi=phi, poisson=0.28, n=16)
         assert r.nu_T == pytest.approx(plain.nu_T, abs=5 * phi + 1e-9)
+
+
+@pytest.mark.parametrize("model", ["rigid", "fastsim", "kinematic"])
+def test_alpha_below_the_float_range_is_rigid_sliding(model):
+    """alpha' = 1e-310 makes the spin creepage 20 (1 - nu)/alpha' overflow; it must read as alpha' = 0."""
+    common = dict(shape="ellipse", b_over_a=1.0, c_over_a=0.2, l_over_a=0.3, poisson=0.28, n=16)
+    tiny = solve(model, alpha=1e-310, **common)
+    zero = solve(model, alpha=0.0, **common)
+    assert (tiny.nu_T, tiny.nu_v, tiny.nu_0) == (zero.nu_T, zero.nu_v, zero.nu_0)
