@@ -97,7 +97,8 @@ class SettleReport:
     duration_s: simulated time from the step to the detected steady state [s];
     criterion: what was checked (e.g. "|d omega_2/dt| < 1e-4 rad/s^2 and |T_B - T_set| < 0.2 %
     over 0.5 s"); residual: the checked quantity's final value (dimensionless, relative);
-    start: "rest" or "previous point".
+    start: the state the point started from, in words ("rest", "steady state of the previous
+    point", "disc following the swinging roller", ...).
     """
 
     duration_s: float

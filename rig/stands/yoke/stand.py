@@ -1,0 +1,137 @@
+"""Stand A of seed 000 (Figs. 8-9, 3.1): the yoke/spring stand as a digital twin.
+
+    YokeStand(parameters, effects, contact, drive)   # rig.stands.base.Stand
+    stand.calibrate(seed); point = stand.start_point(k, settings, previous, seed)
+    point.settle(timeout_s); gate = point.gate(gate_time_s); outcome = point.read(gate)
+    stand.reduce_log(log_path, contact_law=None)  -> reduced DataFrame
+
+Steel wheel 1 (driven by motor 9 through coupling 8) presses, through spring 5, on the laminate
+disc 2 in yoke 3 (axle 4, dynamometer 10 at 102 mm against R_v = 42.5 mm); shoe brake 12 on drum
+11 with mechanical feedback loads wheel 2; strobe discs 13/14, photocells 15/16 and counters
+18/19 gated by timer 22 measure the speed ratio. Parameters: rig.stands.yoke.parameters; the
+physics in contact_forces, drive_train, brake, steady_state; docs/stand-a.md.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import ClassVar
+
+from rig import validate
+from rig.errors import ParameterError
+from rig.logbook import LogSchema
+from rig.stands.base import ContactSpec, DriveMode, Stand
+from rig.stands.yoke import instruments, laws
+from rig.stands.yoke import parameters as spec
+from rig.stands.yoke.brake import critical_gain
+from rig.stands.yoke.contact_forces import StandAContact
+from rig.stands.yoke.point import YokePoint
+from rig.stands.yoke.reduction import reduce_log
+
+DYNAMIC_ONLY = ("drive_compliance", "brake_dynamics", "brake_friction_fluctuation")
+
+
+class YokeStand(Stand):
+    """Stand A. ``law_factory(spec, shape, b_over_a, domain) -> law`` defaults to
+    rig.stands.contact_law.make_contact_law (a stand-in can be given, e.g. in tests)."""
+
+    name: ClassVar[str] = "yoke"
+    PARAMETERS = spec.PARAMETERS
+    EFFECTS = spec.EFFECTS
+    SETTINGS = spec.SETTINGS
+    LOG_SCHEMA = LogSchema(
+        channels={instruments.DYNAMOMETER: "V", instruments.BALANCE: "N m"},
+        settings=dict(spec.LOG_SETTINGS.values()),
+        readings={"T2": "N m", "dynamometer_signal": "V"},
+        counters=instruments.CHANNELS,
+    )
+
+    def __init__(self, parameters: Mapping[str, float], effects: Mapping[str, Mapping[str, float]],
+                 contact: ContactSpec, drive: DriveMode, *, law_factory: laws.LawFactory | None = None) -> None:
+        self.params = spec.resolve(parameters)
+        self.law = laws.LawCache(contact, self.params.mu, law_factory)  # law(b_over_a, geometry) -> (law, domain)
+        if not isinstance(drive, DriveMode):
+            raise ParameterError("drive", drive, "one of " + ", ".join(f"DriveMode.{m.name}" for m in DriveMode))
+        validate.known_keys("stand A effect", effects, spec.EFFECTS)
+        self.effects = {name: spec.effect_values(name, given) for name, given in effects.items()}
+        self._check_effects(drive)
+        self.contact_spec = contact
+        self.drive = drive
+        self._law_factory = law_factory
+        self._calibrations: dict[int, object] = {}
+
+    def _check_effects(self, drive: DriveMode) -> None:
+        if drive is DriveMode.QUASI_STATIC:
+            for name in DYNAMIC_ONLY:
+                if name in self.effects:
+                    raise ParameterError(f"effects.{name}", "named", "only with drive = DriveMode.DYNAMIC (the "
+                                         "quasi-static drive has no dynamics)")
+        if "brake_friction_fluctuation" in self.effects and "brake_dynamics" not in self.effects:
+            raise ParameterError("effects.brake_friction_fluctuation", "named without brake_dynamics",
+                                 "together with effects.brake_dynamics (the disturbance acts through the loop)")
+        if "brake_dynamics" in self.effects:
+            e = self.effects["brake_dynamics"]
+            g_max = critical_gain((e["tau_lever_s"], e["tau_shoe_s"], e["tau_lining_s"]))
+            if e["loop_gain"] >= g_max:
+                raise ParameterError("effects.brake_dynamics.loop_gain", e["loop_gain"],
+                                     f"(0, {g_max:.4g}): Routh-Hurwitz limit of the three-lag brake loop")
+        f = self.effects.get("brake_friction_fluctuation")
+        if f is not None and f["f_max_Hz"] < f["f_min_Hz"]:
+            raise ParameterError("effects.brake_friction_fluctuation.f_max_Hz", f["f_max_Hz"],
+                                 f">= f_min_Hz = {f['f_min_Hz']:g} Hz")
+
+    # ------------------------------------------------------------------------------ pieces
+
+    def check_settings(self, settings: Mapping[str, float]) -> dict[str, float]:
+        """Every SETTING present and inside its range (named errors); returns floats."""
+        validate.known_keys("stand A setting", settings, self.SETTINGS)
+        out = {}
+        for name, setting in self.SETTINGS.items():
+            if name not in settings:
+                raise ParameterError(name, "missing", f"a number in [{setting.lo:g}, {setting.hi:g}] {setting.unit}")
+            out[name] = validate.number(name, settings[name], setting.lo, setting.hi)
+        return out
+
+    def contact_for(self, settings: Mapping[str, float]) -> StandAContact:
+        """The contact of an operating point's settings (F_N, Delta h)."""
+        p = self.params
+        geometry = p.geometry_at(settings["delta_h_m"])
+        f_n = settings["normal_force_N"]
+        b_over_a = geometry.b_over_a(f_n)
+        law, domain = self.law(b_over_a, geometry)
+        return StandAContact(geometry, f_n, b_over_a, p.mu, law, domain, p.slip_speed_eps_m_s)
+
+    def calibration(self, seed: int):
+        """The calibration record of dynamometer 10 for the run ``seed`` (made once, then kept)."""
+        seed = validate.integer("seed", seed, 0)
+        if seed not in self._calibrations:
+            self._calibrations[seed] = instruments.calibrate(self.params, self.effects, seed)
+        return self._calibrations[seed]
+
+    # ------------------------------------------------------------------------------ contract
+
+    def calibrate(self, seed: int) -> Mapping[str, object]:
+        """Calibrate dynamometer 10 with weights (once per run); {"dynamometer_10": CalibrationRecord}."""
+        return {instruments.DYNAMOMETER: self.calibration(seed)}
+
+    def start_point(self, index: int, settings: Mapping[str, float], previous: Mapping[str, float] | None,
+                    seed: int) -> YokePoint:
+        """Point ``index``: from the steady state of ``previous`` (rest if None), step to ``settings``."""
+        return YokePoint(self, index, settings, previous, seed)
+
+    def reduce_log(self, log_path, contact_law=None):
+        """Reduce a log of this stand (eqs. 29-35): DataFrame, one row per point.
+
+        contact_law: None = the stand's own laws (the scene's ContactSpec, as simulated); a
+        ContactSpec = laws of that spec; or a callable law_for(b_over_a, geometry) -> (law, domain).
+        """
+        if contact_law is None:
+            law_for = self.law
+        elif isinstance(contact_law, ContactSpec):
+            law_for = self.law if contact_law == self.contact_spec else laws.LawCache(
+                contact_law, self.params.mu, self._law_factory)
+        elif callable(contact_law):
+            law_for = contact_law
+        else:
+            raise ParameterError("contact_law", contact_law, "None, a ContactSpec or law_for(b_over_a, geometry)")
+        return reduce_log(log_path, self.params, law_for)
