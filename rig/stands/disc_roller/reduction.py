@@ -1,0 +1,121 @@
+"""Reduce a stand-B log: each point's record -> rig.reduction.stand_b readings -> mu, M_C.
+
+Per point (rig.logbook readers; the truth is never read here):
+* F_T, F_V, T_Mo: mean of the recorded channel [V] converted with the point's calibration
+  record (sensors.CalibrationRecord), u from the calibration's covariance (it holds the
+  weights' +-0.098 N) and the scatter of the mean over the gate plus the converter's LSB^2/12;
+* l, sigma, F_N from the settings with the stand's u_l_setting, u_twist, u_normal_force;
+  b/a from the stand's Hertz line contact at F_N (the value the simulation used);
+* direction -1 (reverse running) is mapped onto the canonical frame of the chain (forward,
+  spin > 0) by the mirror x -> -x (rig.stands.disc_roller.contact): sigma, F_T and T_Mo change
+  sign, l and F_V do not. The chain's M_C = T_Mo + R_c F_T is then T0 = mu a F_N nu_0 >= 0
+  (plus the disc-bearing friction, if any: a systematic error of the method).
+The law is the stand's (the one it simulated with); outside its domain the coefficients are
+NaN and the chain reports the point as not reducible, with the reason. Swinging-drive logs
+have no steady operating point and are refused.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+import pandas as pd
+
+from rig.contact.surrogate import TableDomain
+from rig.errors import LogFormatError
+from rig.logbook import PointRecord, point_indices, read_point
+from rig.reduction import stand_b
+from rig.reduction.iteration import ReductionSettings
+from rig.reduction.readings import Measured
+from rig.reduction.table import reduced_table
+from rig.stands.disc_roller.contact import Law
+from rig.stands.disc_roller.instruments import CHANNELS, record_from_fields
+from rig.stands.disc_roller.parameters import StandBParameters
+from sensors import Adc
+
+CALIBRATION_FIELDS = ("sensitivity", "offset", "u_sensitivity", "u_offset", "cov_sensitivity_offset",
+                      "residual_std", "n_steps")
+
+
+def coefficients(law: Law, domain: TableDomain) -> stand_b.Coefficients:
+    """Scalar coefficients(l/a, c/a, alpha') of a vectorised law; NaN outside its domain."""
+
+    def evaluate(l_over_a: float, c_over_a: float, alpha: float) -> tuple[float, float, float]:
+        inside = all(lo <= x <= hi for x, (lo, hi) in
+                     ((l_over_a, domain.l_over_a), (c_over_a, domain.c_over_a), (alpha, domain.alpha)))
+        if not inside:
+            return math.nan, math.nan, math.nan
+        nu = np.asarray(law(np.array([l_over_a]), np.array([c_over_a]), np.array([alpha])), dtype=float)
+        return tuple(float(x) for x in nu.reshape(3))
+
+    return evaluate
+
+
+def _value(group, name: str, where: str) -> float:
+    if name not in group:
+        raise LogFormatError(f"{where}: {name!r} is missing (present: {', '.join(group) or 'none'})")
+    return float(group[name].value)
+
+
+def channel_reading(record: PointRecord, channel: str, where: str) -> Measured:
+    """Calibrated mean of a recorded channel [N or N m] with its standard uncertainty."""
+    if channel not in record.channels or channel not in record.calibration:
+        raise LogFormatError(f"{where}: channel or calibration {channel!r} is missing")
+    volts = record.channels[channel].samples
+    cal = record.calibration[channel]
+    calibration = record_from_fields(channel, {f: _value(cal, f, where) for f in CALIBRATION_FIELDS})
+    lsb = Adc().lsb_V
+    scatter = float(np.var(volts, ddof=1)) / volts.size if volts.size > 1 else 0.0
+    mean = float(np.mean(volts))
+    value = float(calibration.to_quantity(np.array([mean]))[0])
+    u = float(calibration.quantity_standard_uncertainty(np.array([mean]), math.sqrt(scatter + lsb * lsb / 12.0))[0])
+    return Measured(value, u)
+
+
+def point_readings(record: PointRecord, params: StandBParameters, where: str) -> stand_b.StandBReadings:
+    """The stand_b readings of one logged point in the chain's canonical (forward) frame."""
+    s = record.settings
+    f_n = _value(s, "normal_force", where)
+    direction = _value(s, "direction", where)
+    if direction not in (-1.0, 1.0):
+        raise LogFormatError(f"{where}: setting 'direction' = {direction!r}, expected +1 or -1")
+    f_t, f_v, t_mo = (channel_reading(record, name, where) for name in CHANNELS)
+    return stand_b.StandBReadings(
+        l_setting=Measured(_value(s, "l", where), params.u_l_setting),
+        twist=Measured(direction * _value(s, "sigma", where), params.u_twist),
+        normal_force=Measured(f_n, params.u_normal_force),
+        peripheral_force=Measured(direction * f_t.value, f_t.u),
+        lateral_force=f_v,
+        momentometer_torque=Measured(direction * t_mo.value, t_mo.u),
+        b_over_a=params.b_over_a(f_n),
+    )
+
+
+def reduce_log(
+    path, params: StandBParameters, law_for: Callable[[float], Law], domain_for: Callable[[float], TableDomain],
+    settings: ReductionSettings | None = None,
+) -> pd.DataFrame:
+    """Reduced table of a stand-B log, one row per point (index ``point`` = the log's point index).
+
+    law_for(b/a) -> law, domain_for(b/a) -> its TableDomain (the stand's); settings: the chain's.
+    """
+    settings = ReductionSettings() if settings is None else settings
+    indices = point_indices(path)
+    points = []
+    for index in indices:
+        record = read_point(path, index)
+        readings = point_readings(record, params, f"{path}: point {index}")
+        law = coefficients(law_for(readings.b_over_a), domain_for(readings.b_over_a))
+        points.append(stand_b.reduce(readings, law, params.geometry, settings))
+    frame = reduced_table(points)
+    frame.index = pd.Index(indices, name="point")
+    frame.attrs["units"] = {name: _unit(name) for name in frame.columns if name != "reason"}
+    return frame
+
+
+def _unit(column: str) -> str:
+    """Unit of a reduced column (u_<name> has the unit of <name>): m, N m or 1."""
+    name = column[2:] if column.startswith("u_") else column
+    return {"l_m": "m", "c_m": "m", "M_C_N_m": "N m"}.get(name, "1")
