@@ -1,0 +1,93 @@
+"""Operating points on a local process pool (``--jobs N``), results identical to a serial run.
+
+Each worker process builds its own stand from the scene and runs the stand's calibration once
+(a pure function of the run seed by the contract, so every worker holds the records the
+serial run holds); then it simulates one point per task with the operator of
+rig.runner.operator. Results come back in point order, so the log, the failures and the
+STOP policy are the same as in a serial run. Processes are started with "spawn" (no inherited
+state; the stand class must be importable by its module path).
+
+The logbook's records are read-only mappings (``types.MappingProxyType``), which pickle cannot
+handle; a reducer registered on multiprocessing's pickler (only there) sends them as dicts.
+An error inside a worker comes back as :class:`WorkerError` naming the point and the original
+error (rig's exceptions do not survive pickling with their arguments).
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import traceback
+import types
+from collections.abc import Callable, Sequence
+from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
+from dataclasses import dataclass
+from multiprocessing.reduction import ForkingPickler
+
+from rig.errors import RigError
+from rig.runner.operator import PointResult, run_operator
+from rig.scenes.procedure import PlannedPoint, TimeoutPolicy
+from rig.scenes.stand_scene import StandScene
+
+
+class WorkerError(RigError):
+    """A point failed with an error inside a worker process (message: point, error type, text)."""
+
+
+def _mapping_proxy(content: dict) -> types.MappingProxyType:
+    return types.MappingProxyType(content)
+
+
+ForkingPickler.register(types.MappingProxyType, lambda proxy: (_mapping_proxy, (dict(proxy),)))
+
+
+@dataclass(frozen=True)
+class _Failure:
+    """An exception of a worker, as text (picklable)."""
+
+    point: PlannedPoint
+    kind: str
+    message: str
+    trace: str
+
+
+_worker: dict = {}
+
+
+def _start_worker(scene: StandScene) -> None:
+    stand = scene.build_stand()
+    stand.calibrate(scene.seed)
+    _worker.update(scene=scene, stand=stand)
+
+
+def _simulate(point: PlannedPoint) -> PointResult | _Failure:
+    scene: StandScene = _worker["scene"]
+    results: list[PointResult] = []
+    try:
+        run_operator(_worker["stand"], [point], scene.procedure, scene.seed, results.append)
+    except Exception as error:  # noqa: BLE001 - sent back whole, raised in the parent as WorkerError
+        return _Failure(point, type(error).__name__, str(error), traceback.format_exc())
+    return results[0]
+
+
+def run_pool(scene: StandScene, points: Sequence[PlannedPoint], jobs: int,
+             deliver: Callable[[PointResult], None]) -> None:
+    """Simulate ``points`` on ``jobs`` processes; ``deliver`` gets each result in point order."""
+    context = multiprocessing.get_context("spawn")
+    pool = ProcessPoolExecutor(max_workers=jobs, mp_context=context, initializer=_start_worker, initargs=(scene,))
+    try:
+        futures = [pool.submit(_simulate, point) for point in points]
+        for future in futures:
+            try:
+                result = future.result()
+            except BrokenProcessPool as error:  # a worker died, e.g. the stand failed to build or calibrate
+                raise WorkerError(f"a worker process of the pool failed ({error}); run with --jobs 1 to see the "
+                                  "error of the stand") from None
+            if isinstance(result, _Failure):
+                raise WorkerError(f"point {result.point.index} {dict(result.point.settings)}: {result.kind}: "
+                                  f"{result.message}\n{result.trace}")
+            deliver(result)
+            if result.failure is not None and scene.procedure.on_settle_timeout is TimeoutPolicy.STOP:
+                break
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)

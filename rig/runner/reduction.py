@@ -1,0 +1,82 @@
+"""Reduce a finished log: the stand's reduce_log, truth beside it, reduced.csv and ``/reduced`` in the log.
+
+The stand reduces its own log with eqs. (29)-(36) (``Stand.reduce_log(log_path, contact)``; the
+runner passes the scene's ContactSpec, from which the stand builds the contact law at each
+load's b/a). The table's index is the point index. When the stand's table has no ``true_``
+columns and the log has a truth group, the runner adds ``true_<name>`` for l_over_a, c_over_a,
+mu_v and mu_T from the dimensionless truth values of the same name; ``true_mu_v`` and
+``true_mu_T`` fall back to the truth's single friction coefficient ``mu`` (the simulation uses
+one mu for both directions), a choice of this runner.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import pandas as pd
+
+from rig.errors import LogFormatError, ParameterError, RigError
+from rig.logbook import write_reduced
+from rig.logbook.truth import read_truth
+from rig.logbook.units import DIMENSIONLESS
+from rig.stands.base import ContactSpec, Stand
+
+REDUCED_CSV = "reduced.csv"
+TRUTH_SOURCES = {
+    "l_over_a": ("l_over_a",),
+    "c_over_a": ("c_over_a",),
+    "mu_v": ("mu_v", "mu"),
+    "mu_T": ("mu_T", "mu"),
+}
+"""true_<name> column -> dimensionless truth values (bare column names of read_truth) tried in order."""
+
+
+@dataclass(frozen=True)
+class Reduction:
+    """A reduced log: the table (index: point), the CSV written, and whether ``/reduced`` went into
+    the log (``problem`` says why not)."""
+
+    table: pd.DataFrame
+    csv: Path
+    stored_in_log: bool
+    problem: str | None
+
+
+def attach_truth(table: pd.DataFrame, truth: pd.DataFrame | None) -> pd.DataFrame:
+    """``table`` with ``true_<name>`` columns from ``truth`` (rows matched by point index), unless it
+    already has truth columns or there is none."""
+    if truth is None or any(str(c).startswith("true_") for c in table.columns):
+        return table
+    table = table.copy()
+    truth_units = truth.attrs.get("units", {})
+    for name, sources in TRUTH_SOURCES.items():
+        source = next((s for s in sources if truth_units.get(s) == DIMENSIONLESS), None)
+        if source is not None:
+            table[f"true_{name}"] = truth[source].reindex(table.index).to_numpy()
+            if isinstance(table.attrs.get("units"), dict):
+                table.attrs["units"] = table.attrs["units"] | {f"true_{name}": DIMENSIONLESS}
+    return table
+
+
+def read_truth_if_any(log_path: Path) -> pd.DataFrame | None:
+    """The log's truth table, or None for a log without a truth group (a real stand's)."""
+    try:
+        return read_truth(log_path)
+    except LogFormatError:
+        return None
+
+
+def reduce_to_files(stand: Stand, log_path: Path, contact: ContactSpec, out_dir: Path) -> Reduction:
+    """Reduce ``log_path`` with ``stand``; write ``out_dir/reduced.csv`` and ``/reduced`` into the log."""
+    table = stand.reduce_log(log_path, contact)
+    if not isinstance(table, pd.DataFrame):
+        raise RigError(f"stand {stand.name!r}: reduce_log returned {type(table).__name__}, not a DataFrame")
+    table = attach_truth(table, read_truth_if_any(log_path))
+    csv = out_dir / REDUCED_CSV
+    table.to_csv(csv, index=True, index_label=table.index.name or "point")
+    try:
+        write_reduced(log_path, table)
+    except ParameterError as error:  # reported in the summary; reduced.csv holds the table
+        return Reduction(table, csv, False, f"reduced table not stored in {log_path.name}: {error}")
+    return Reduction(table, csv, True, None)

@@ -1,0 +1,107 @@
+"""A stand run end to end with the fake stand: outputs, failures in the summary, effects not built.
+
+Independent numbers: the fake stand's truth is mu = 0.3 (the scene's override) and F = mu load;
+its noise has std 0.2 N, so mu from a 100-sample gate scatters by 0.02/sqrt(100)/load around 0.3.
+"""
+
+from __future__ import annotations
+
+from unittest import mock
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from rig.logbook import point_indices, read_metadata, read_reduced
+from rig.logbook.truth import read_truth
+from rig.runner import run_scene
+from rig.runner.sweep import show_progress
+from rig.scenes import parse_scene
+from tests.runner import fake_stand
+from tests.runner.fake_stand import NO_FIGURES, register, scene_text
+
+FAILING = NO_FIGURES | {"mu = 0.3": "mu = 0.3\nsettle_tau_s = 1.0",  # tau = 1 s: the step 10 -> 50 N needs ln(41) s > 3 s
+           "load_N = [5.0, 10.0, 20.0, 25.0]": "load_N = [5.0, 10.0, 50.0, 55.0]"}
+
+
+@pytest.fixture(autouse=True)
+def _fake_stand(monkeypatch):
+    register(monkeypatch)
+
+
+def run(tmp_path, replace=None, **options):
+    options.setdefault("progress", False)
+    return run_scene(parse_scene(scene_text(replace), name="fake"), tmp_path, **options)
+
+
+def test_outputs_reduced_table_and_summary(tmp_path):
+    report = run(tmp_path)
+    assert report.files == ("log.h5", "reduced.csv", "reduced_vs_truth.png", "summary.txt")
+    assert (tmp_path / "reduced_vs_truth.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    table = pd.read_csv(tmp_path / "reduced.csv", index_col="point")
+    assert list(table.columns[:8]) == ["l_over_a", "u_l_over_a", "c_over_a", "u_c_over_a", "mu_v", "u_mu_v",
+                                       "mu_T", "u_mu_T"]
+    assert list(table.columns[8:]) == ["true_l_over_a", "true_c_over_a", "true_mu_v", "true_mu_T"]
+    assert (table["true_mu_T"] == 0.3).all()
+    assert np.all(np.abs(table["mu_T"] - 0.3) < 5 * table["u_mu_T"])  # u = 0.2 N / sqrt(100) / load
+    assert table["u_mu_T"].to_numpy() == pytest.approx(0.02 / np.array([5, 10, 20, 25]), rel=0.35)
+    assert read_metadata(tmp_path / "log.h5").scene_toml == scene_text()  # verbatim
+    stored = read_reduced(tmp_path / "log.h5")
+    np.testing.assert_array_equal(stored["mu_T"].to_numpy(), table["mu_T"].to_numpy())
+    truth = read_truth(tmp_path / "log.h5")
+    assert truth["operator_settle_time_s"].to_numpy() == pytest.approx(0.2 * np.log1p([5, 5, 10, 5]))
+    text = (tmp_path / "summary.txt").read_text()
+    assert text == report.summary
+    assert "planned 4, in log 4 (0 resumed from an interrupted run, 4 simulated now), failed 0" in text
+    assert "settle time: min 0.358 s, median 0.358 s, max 0.48 s" in text  # 0.2 ln 6, 0.2 ln 11
+    assert "calibration: dynamometer (once per run)" in text
+    assert "mu_T: 4 points" in text and "within 2u:" in text
+    assert "effects:     force_noise" in text
+
+
+def test_points_that_do_not_settle_are_listed_and_skipped(tmp_path):
+    report = run(tmp_path, FAILING)
+    assert [f.index for f in report.failures] == [2] and not report.stopped
+    assert point_indices(tmp_path / "log.h5") == [0, 1, 3]
+    assert "failed 1" in report.summary
+    assert "point 2 (load_N = 50, speed_rad_s = 10): operating point" in report.summary
+    assert list(pd.read_csv(tmp_path / "reduced.csv")["point"]) == [0, 1, 3]
+
+
+def test_stop_policy_ends_the_run_at_the_first_failure(tmp_path):
+    report = run(tmp_path, FAILING | {"gate_time_s = 1.0": 'gate_time_s = 1.0\non_settle_timeout = "stop"'})
+    assert report.stopped and point_indices(tmp_path / "log.h5") == [0, 1]
+    assert "run stopped at the first failure" in report.summary
+
+
+def test_effects_the_scene_does_not_name_are_not_built_nor_called(tmp_path):
+    drift = mock.Mock(wraps=fake_stand.ForceDrift)
+    noise = mock.Mock(wraps=fake_stand.ForceNoise)
+    with mock.patch.dict(fake_stand.COMPONENTS, {"force_drift": drift, "force_noise": noise}), \
+            mock.patch.object(fake_stand.ForceDrift, "apply") as drift_apply:
+        scene = parse_scene(scene_text(NO_FIGURES), name="fake")
+        noise.assert_not_called()  # loading a scene builds nothing
+        run_scene(scene, tmp_path, progress=False)
+    drift.assert_not_called()
+    drift_apply.assert_not_called()
+    noise.assert_called_once_with(std_N=0.2)
+
+
+def test_no_effects_named_builds_none(tmp_path):
+    with mock.patch.object(fake_stand.ForceNoise, "__init__") as noise, \
+            mock.patch.object(fake_stand.ForceDrift, "__init__") as drift:
+        report = run(tmp_path, NO_FIGURES | {"[effects.force_noise]\nstd_N = 0.2\n": ""})
+    noise.assert_not_called()
+    drift.assert_not_called()
+    assert "effects:     none" in report.summary
+    table = pd.read_csv(tmp_path / "reduced.csv")
+    assert (table["mu_T"] == 0.3).all() and (table["u_mu_T"] == 0.0).all()  # exact without noise
+    assert "no comparable points" in report.summary  # u = 0: no z to state
+
+
+def test_progress_bar_only_on_a_terminal_unless_asked(tmp_path, capsys):
+    assert show_progress(None) is False  # pytest's stderr is not a terminal
+    run(tmp_path / "quiet", NO_FIGURES, progress=None)
+    assert capsys.readouterr().err == ""
+    run(tmp_path / "loud", NO_FIGURES, progress=True)
+    assert "4/4" in capsys.readouterr().err
