@@ -27,8 +27,17 @@ from rig.bearing.ball_raceway import BearingGeometry, Ring, raceway_contact
 from rig.bearing.kinematics import cage_speed, contact_spin, raceway_speed
 from rig.contact.grid import make_grid
 from rig.contact.kinematics import Creepage
-from rig.contact.materials import combined_poisson, combined_shear_modulus, substitute_modulus
+from rig.contact.hertz import LineGeometry, line_contact
+from rig.contact.materials import (
+    PMMA,
+    RUBBER_LINING,
+    combined_poisson,
+    combined_shear_modulus,
+    contact_modulus,
+    substitute_modulus,
+)
 from rig.contact.transient import RollingPath, WorkMap, solve_transient
+from rig.reduction.geometry import StandBGeometry
 
 SWEEP_COLUMNS = ["stroke_ratio", "max_work_J_m2", "max_slip_path_m", "max_slip_lengthwise_m", "max_slip_crosswise_m"]
 
@@ -101,6 +110,28 @@ class OscillatingContact:
             shear_modulus=combined_shear_modulus(material, material),
             stroke_per_radian=2.0 * hertz.b / e1_amplitude,
             label=f"{ring.name.lower()} raceway, F = {force_N / 1e3:g} kN, mu = {mu:g}",
+        )
+
+
+    @classmethod
+    def disc_roller(cls, normal_force_N: float, mu: float) -> OscillatingContact:
+        """Stand B's roller under its earlier swinging drive (seed 000 3.2.2, seed notes 4.2).
+
+        Line contact of the rubber-lined roller (d = 125 mm, 2a = 8 mm) on the PMMA disc; the
+        disc is geared to the roller, so the spin follows the rolling with v/w0 = R_c and the
+        rolling point stays where the screws set it (here the contact centre). The roller's
+        double amplitude 2 theta_A rolls x = R_r 2 theta_A, so e = R_r theta_A/b.
+        """
+        mu = validate.number("mu", mu, 0.0, lo_open=True)
+        stand = StandBGeometry()
+        pair = (RUBBER_LINING, PMMA)
+        hertz = line_contact(normal_force_N, LineGeometry(2.0 * stand.a, stand.roller_radius), contact_modulus(*pair))
+        alpha = 40.0 * mu * hertz.p0 * stand.radius_c / (hertz.a * substitute_modulus(*pair))
+        return cls(
+            shape="line", b_over_a=hertz.b_over_a, alpha=alpha, c_over_a=0.0, l_over_a=0.0,
+            poisson=combined_poisson(*pair), mu=mu, p0=hertz.p0, a=hertz.a,
+            shear_modulus=combined_shear_modulus(*pair), stroke_per_radian=stand.roller_radius,
+            label=f"stand B swinging drive, F_N = {normal_force_N:g} N, mu = {mu:g}",
         )
 
 
