@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from rig import validate
+from rig.campaigns import paper_figure
 from rig.logbook import LogWriter, RunMetadata, point_indices, read_point, utc_timestamp
 from rig.runner.figures import FIGURE_NAME, reduced_vs_truth_figure
 from rig.runner.reduction import Reduction, read_truth_if_any, reduce_to_files
@@ -74,18 +75,24 @@ def run_stand_scene(scene: StandScene, out_dir: Path, *, jobs: int = 1, progress
         files.append(reduction.csv.name)
         if reduction.problem:
             problems.append(reduction.problem)
+    campaign_lines: tuple[str, ...] = ()
     if scene.outputs.figures and reduction is not None:
         figure = reduced_vs_truth_figure(reduction.table, plan, scene.procedure, out_dir / FIGURE_NAME,
                                          f"{scene.name}: {scene.description}")
         if figure is not None:
             files.append(figure.name)
+        if scene.outputs.paper_figure is not None:
+            outcome = paper_figure(scene.outputs.paper_figure)(reduction.table, log_path, out_dir,
+                                                               f"{scene.name}: {scene.description}")
+            files.extend(outcome.files)
+            campaign_lines = outcome.summary
     files.append(SUMMARY_NAME)
     facts = RunFacts(
         planned=len(plan), resumed=len(plan) - len(todo), written_now=len(sweep.written), failures=sweep.failures,
         stopped=sweep.stopped, jobs=jobs, settle_times_s=_settle_times(log_path),
         calibration=_calibration_names(log_path), operator_time_s=sweep.operator_time_s,
     )
-    text = summary_text(scene, facts, None if reduction is None else reduction.table, problems, files)
+    text = summary_text(scene, facts, None if reduction is None else reduction.table, problems, files, campaign_lines)
     (out_dir / SUMMARY_NAME).write_text(text, encoding="utf-8")
     return RunReport(out_dir, tuple(files), len(plan), facts.resumed + facts.written_now, facts.resumed,
                      tuple(sweep.failures), sweep.stopped, text)

@@ -85,8 +85,8 @@ class RunFacts:
 
 
 def summary_text(scene: StandScene, facts: RunFacts, table: pd.DataFrame | None, problems: Sequence[str],
-                 outputs: Sequence[str]) -> str:
-    """The text of summary.txt."""
+                 outputs: Sequence[str], campaign: Sequence[str] = ()) -> str:
+    """The text of summary.txt; ``campaign``: the lines of the paper-figure checks, if any."""
     c = scene.contact
     lines = [
         "friction-rig run summary",
@@ -118,6 +118,9 @@ def summary_text(scene: StandScene, facts: RunFacts, table: pd.DataFrame | None,
         if found:
             lines.append("reduced vs truth, z = |reduced - true| / u (u: stated standard uncertainty):")
             lines += [a.line() for a in found]
+    if campaign:
+        lines.append(f"paper figure ({scene.outputs.paper_figure}):")
+        lines += [f"  {line}" for line in campaign]
     if problems:
         lines.append("problems:")
         lines += [f"  {p}" for p in problems]

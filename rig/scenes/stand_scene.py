@@ -12,6 +12,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from rig import validate
+from rig.campaigns import PAPER_FIGURES
 from rig.errors import ParameterError
 from rig.logbook.content import MAX_SEED
 from rig.scenes import tables as T
@@ -21,16 +22,18 @@ from rig.stands.base import ContactSpec, DriveMode, Stand
 
 TOP_KEYS = ("scene", "parameters", "contact", "effects", "procedure", "outputs")
 SCENE_KEYS = ("kind", "description", "stand", "seed", "drive")
-OUTPUT_KEYS = ("reduce", "figures")
+OUTPUT_KEYS = ("reduce", "figures", "paper_figure")
 
 
 @dataclass(frozen=True)
 class Outputs:
     """Which outputs a run writes besides log.h5 and summary.txt: the reduction (reduced.csv and
-    /reduced in the log) and the figures (PNG)."""
+    /reduced in the log), the figures (PNG), and a figure laid out like one of the paper's
+    (``paper_figure``: a name of rig.campaigns.PAPER_FIGURES, or None)."""
 
     reduce: bool = True
     figures: bool = True
+    paper_figure: str | None = None
 
 
 @dataclass(frozen=True)
@@ -100,10 +103,15 @@ def parse_effects(table: Mapping[str, object], specs: Mapping[str, object]) -> d
 
 
 def parse_outputs(table: Mapping[str, object] | None) -> Outputs:
-    """``[outputs]`` (optional): ``reduce`` and ``figures`` flags, both default true."""
+    """``[outputs]`` (optional): ``reduce`` and ``figures`` flags, both default true, and
+    ``paper_figure`` (a campaign figure name, default none)."""
     table = table or {}
     T.check_keys(table, OUTPUT_KEYS, "outputs")
-    return Outputs(reduce=T.flag(table, "reduce", "outputs", True), figures=T.flag(table, "figures", "outputs", True))
+    paper = table.get("paper_figure")
+    if paper is not None:
+        validate.choice("outputs.paper_figure", paper, PAPER_FIGURES)
+    return Outputs(reduce=T.flag(table, "reduce", "outputs", True), figures=T.flag(table, "figures", "outputs", True),
+                   paper_figure=paper)
 
 
 def parse_stand_scene(document: Mapping[str, object], *, name: str, source: str, text: str,
