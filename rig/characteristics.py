@@ -7,7 +7,7 @@ throughout (alpha' of eq. 21; nu of eqs. 26-28).
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -16,7 +16,8 @@ import pandas as pd
 
 from rig.contact.solve import solve
 
-COLUMNS = ["model", "shape", "b_over_a", "c_over_a", "l_over_a", "poisson", "n", "alpha",
+MIN_SPAN = 0.1  # smallest y range of a panel [1]
+COLUMNS = ["model", "variant", "shape", "b_over_a", "c_over_a", "l_over_a", "poisson", "n", "alpha",
            "nu_T", "nu_v", "nu_0", "nu_Mo", "stick_fraction"]
 
 
@@ -42,20 +43,26 @@ def sweep(
     poisson: float,
     n: int,
     effects: dict[str, float] | None = None,
+    variants: Mapping[str, Mapping[str, float]] | None = None,
     progress=None,
 ) -> pd.DataFrame:
-    """One row per (case, model, alpha'): the columns of COLUMNS. ``progress(k, total)`` is called per row."""
-    effects = effects or {}
+    """One row per (case, model or variant, alpha'): the columns of COLUMNS.
+
+    ``effects`` apply to the kinematic model in ``models``; ``variants`` {label: effects} add
+    kinematic-model runs with other effects (seed 000 Figs. 4-7 switch Psi, mu0/mu and surface
+    inertia on one at a time); ``progress(k, total)`` is called per row.
+    """
+    runs = [(model, "", dict(effects or {}) if model == "kinematic" else {}) for model in models]
+    runs += [("kinematic", label, dict(extra)) for label, extra in (variants or {}).items()]
     cases = list(cases)
     rows = []
-    total = len(cases) * len(models) * len(alphas)
+    total = len(cases) * len(runs) * len(alphas)
     for case in cases:
-        for model in models:
+        for model, label, kwargs in runs:
             for alpha in alphas:
-                kwargs = effects if model == "kinematic" else {}
                 r = solve(model, shape=case.shape, b_over_a=case.b_over_a, alpha=float(alpha),
                           c_over_a=case.c_over_a, l_over_a=case.l_over_a, poisson=poisson, n=n, **kwargs)
-                rows.append([model, case.shape, case.b_over_a, case.c_over_a, case.l_over_a, poisson, n,
+                rows.append([model, label, case.shape, case.b_over_a, case.c_over_a, case.l_over_a, poisson, n,
                              float(alpha), r.nu_T, r.nu_v, r.nu_0, r.nu_Mo, r.stick_fraction])
                 if progress is not None:
                     progress(len(rows), total)
@@ -75,13 +82,19 @@ def plot(table: pd.DataFrame, path: Path, title: str) -> Path:
     styles = {"rigid": ":", "linear": "--", "fastsim": "-.", "kinematic": "-"}
     for row, (key, group) in zip(axes, groups):
         case = Case(*key)
-        for model, data in group.groupby("model", sort=False):
+        for (model, variant), data in group.groupby(["model", "variant"], sort=False):
+            label = f"kinematic, {variant}" if variant else model
             for ax, name in zip(row, ("nu_T", "nu_v", "nu_0")):
                 values = data[name].to_numpy()
                 if model == "linear":  # linear theory is unbounded; show it where it is meaningful
                     values = np.where(np.abs(values) <= 1.5, values, np.nan)
-                ax.plot(data["alpha"], values, styles.get(model, "-"), label=model)
+                ax.plot(data["alpha"], values, styles["kinematic"] if variant else styles.get(model, "-"),
+                        label=label, linewidth=1.0 if variant else 1.4)
         for ax, name in zip(row, ("nu_T", "nu_v", "nu_0")):
+            low, high = ax.get_ylim()
+            if high - low < MIN_SPAN:  # rounding noise of a zero coefficient: do not magnify it
+                middle = 0.5 * (low + high)
+                ax.set_ylim(middle - MIN_SPAN / 2, middle + MIN_SPAN / 2)
             ax.set_xscale("log")
             ax.set_ylabel({"nu_T": r"$\nu_T$", "nu_v": r"$\nu_v$", "nu_0": r"$\nu_0$"}[name])
             ax.grid(True, which="both", alpha=0.3)

@@ -23,10 +23,10 @@ def run_characteristics_scene(scene: CharacteristicsScene, out_dir: Path, *, pro
     """Evaluate every model over the scene's cases and alpha' values; write the outputs into ``out_dir``."""
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
-    total = len(scene.cases) * len(scene.models) * len(scene.alphas)
+    total = len(scene.cases) * (len(scene.models) + len(scene.variants)) * len(scene.alphas)
     with tqdm(total=total, desc=f"scene {scene.name}", disable=not show_progress(progress)) as bar:
         table = sweep(scene.cases, scene.models, scene.alphas, poisson=scene.poisson, n=scene.n,
-                      effects=dict(scene.effects), progress=lambda k, _: bar.update(k - bar.n))
+                      effects=dict(scene.effects), variants=scene.variants, progress=lambda k, _: bar.update(k - bar.n))
     table.to_csv(out_dir / CSV_NAME, index=False)
     files = [CSV_NAME]
     if scene.outputs.figures:
@@ -40,6 +40,7 @@ def run_characteristics_scene(scene: CharacteristicsScene, out_dir: Path, *, pro
         f"kind:        contact characteristics (no stand)",
         f"models:      {', '.join(scene.models)}; n = {scene.n}; poisson {scene.poisson:g}; "
         f"effects: {', '.join(f'{k} = {v:g}' for k, v in scene.effects.items()) or 'none'}",
+        *([f"variants:    {', '.join(scene.variants)} (kinematic model)"] if scene.variants else []),
         f"alpha':      {len(scene.alphas)} values {min(scene.alphas):g} .. {max(scene.alphas):g}",
         "cases:       " + "; ".join(case.label for case in scene.cases),
         f"evaluated:   {len(table)} contact solves",

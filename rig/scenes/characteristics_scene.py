@@ -7,7 +7,7 @@ log-spaced alpha' range. All quantities are dimensionless (alpha' of eq. 21; nu 
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from rig import validate
 from rig.characteristics import Case
@@ -22,7 +22,7 @@ from rig.scenes.stand_scene import Outputs
 TOP_KEYS = ("scene", "characteristics")
 SCENE_KEYS = ("kind", "description")
 WHERE = "characteristics"
-KEYS = ("models", "poisson", "n", "alpha", "effects", "cases")
+KEYS = ("models", "poisson", "n", "alpha", "effects", "variants", "cases")
 CASE_KEYS = ("shape", "b_over_a", "c_over_a", "l_over_a")
 MAX_ROLLING_POINT = 1e3  # |c/a|, |l/a| [1]: far outside any contact (hard case 6), still finite
 
@@ -42,6 +42,7 @@ class CharacteristicsScene:
     poisson: float
     n: int
     effects: Mapping[str, float]
+    variants: Mapping[str, Mapping[str, float]] = field(default_factory=dict)
     outputs: Outputs = Outputs(reduce=False, figures=True)
 
 
@@ -89,4 +90,17 @@ def parse_characteristics_scene(document: Mapping[str, object], *, name: str, so
         n=validate.integer(T.dotted(WHERE, "n"), T.required(table, "n", WHERE, f"a whole number in {list(N_RANGE)}"),
                            *N_RANGE),
         effects=parse_effects(table.get("effects"), "kinematic", T.dotted(WHERE, "effects")),
+        variants=parse_variants(table.get("variants")),
     )
+
+
+def parse_variants(given: object) -> dict[str, dict[str, float]]:
+    """``[characteristics.variants]`` (optional): {label: {effect: value}} - kinematic-model runs
+    with other effects, e.g. ``"psi = 2" = { psi = 2.0 }``."""
+    if given is None:
+        return {}
+    where = T.dotted(WHERE, "variants")
+    if not isinstance(given, Mapping) or not given:
+        raise ParameterError(where, given, "a table {label = {effect = value, ...}, ...}")
+    return {str(label): parse_effects(effects, "kinematic", T.dotted(where, str(label)))
+            for label, effects in given.items()}

@@ -11,6 +11,7 @@ import pytest
 
 import rig
 from rig.errors import ParameterError, UnknownNameError
+from rig.characteristics import sweep
 from rig.scenes import CharacteristicsScene, builtin_scenes, load_scene, parse_scene, resolve_scene, scenes_dir
 from rig.scenes.locate import ENV_VAR
 from tests.runner.fake_stand import register, scene_text
@@ -123,3 +124,13 @@ def test_the_annotated_examples_of_docs_scenes_md_validate():
     scene = parse_scene(stand_example, name="doc")
     assert scene.stand == "yoke" and scene.procedure.n_points == 8
     assert scene.contact.effects == {"psi": 1.2} and scene.effects["dynamometer_noise"] == {"std_V": 2e-6}
+
+
+def test_characteristics_variants_run_the_kinematic_model_with_their_effects(tmp_path):
+    document = TINY_CHARACTERISTICS.replace("n = 64", "n = 8") + '\n[characteristics.variants]\n"psi = 2" = { psi = 2.0 }\n'
+    scene = parse_scene(document, name="variants")
+    assert scene.variants == {"psi = 2": {"psi": 2.0}}
+    table = sweep(scene.cases, scene.models, scene.alphas, poisson=scene.poisson, n=scene.n, variants=scene.variants)
+    assert sorted(set(zip(table["model"], table["variant"]))) == [("kinematic", "psi = 2"), ("rigid", "")]
+    with pytest.raises(UnknownNameError, match="did you mean 'psi'"):
+        parse_scene(document.replace("psi = 2.0", "pzi = 2.0"), name="bad")
