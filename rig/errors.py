@@ -10,6 +10,8 @@ from __future__ import annotations
 import difflib
 from collections.abc import Iterable
 
+from sensors.errors import InstrumentParameterError
+
 
 class RigError(Exception):
     """Base class of every error friction-rig raises on purpose.
@@ -29,17 +31,12 @@ def _rebuild(cls: type, message: str, state: dict) -> RigError:
     return error
 
 
-class ParameterError(RigError, ValueError):
-    """A parameter is outside its valid range (or not a number where one is needed)."""
+class ParameterError(RigError, InstrumentParameterError):
+    """A parameter is outside its valid range (or not a number where one is needed).
 
-    def __init__(self, name: str, value: object, valid: str, *, hint: str = "") -> None:
-        self.name = name
-        self.value = value
-        self.valid = valid
-        message = f"{name} = {value!r} is not valid; valid: {valid}"
-        if hint:
-            message += f" ({hint})"
-        super().__init__(message)
+    ``ParameterError(name, value, valid, hint="")`` keeps ``name``, ``value``, ``valid``; the
+    message format is the instruments' (sensors.errors), of which this is rig's refinement.
+    """
 
 
 class UnknownNameError(ParameterError):

@@ -1,20 +1,15 @@
-"""Argument checks shared by the whole package: each raises a named :class:`ParameterError`."""
+"""Argument checks shared by the whole package: each raises a named :class:`ParameterError`.
+
+The numeric checks are the instruments' (sensors.validate), raising rig's error type; the name
+checks (``choice``, ``known_keys``) suggest the closest valid name.
+"""
 
 from __future__ import annotations
 
-import math
-import operator
 from collections.abc import Iterable, Mapping
 
 from rig.errors import ParameterError, UnknownNameError
-
-
-def _interval(lo: float | None, hi: float | None, lo_open: bool, hi_open: bool) -> str:
-    left = "(" if lo_open or lo is None else "["
-    right = ")" if hi_open or hi is None else "]"
-    lo_s = "-inf" if lo is None else f"{lo:g}"
-    hi_s = "inf" if hi is None else f"{hi:g}"
-    return f"{left}{lo_s}, {hi_s}{right}"
+from sensors import validate as _checks
 
 
 def number(
@@ -32,34 +27,13 @@ def number(
     ``lo``/``hi`` are the bounds (None: unbounded); ``*_open`` excludes the bound itself.
     NaN is always rejected; infinity only with ``allow_inf``.
     """
-    valid = _interval(lo, hi, lo_open, hi_open)
-    if isinstance(value, bool):
-        raise ParameterError(name, value, f"a real number in {valid}")
-    try:
-        x = float(value)  # type: ignore[arg-type]
-    except (TypeError, ValueError):
-        raise ParameterError(name, value, f"a real number in {valid}") from None
-    if math.isnan(x) or (math.isinf(x) and not allow_inf):
-        raise ParameterError(name, value, f"a finite number in {valid}")
-    if lo is not None and (x < lo or (lo_open and x == lo)):
-        raise ParameterError(name, value, valid)
-    if hi is not None and (x > hi or (hi_open and x == hi)):
-        raise ParameterError(name, value, valid)
-    return x
+    return _checks.number(name, value, lo, hi, lo_open=lo_open, hi_open=hi_open, allow_inf=allow_inf,
+                          error=ParameterError)
 
 
 def integer(name: str, value: object, lo: int | None = None, hi: int | None = None) -> int:
     """Return ``value`` as an int if it is a whole number (not a bool) inside [lo, hi], else raise."""
-    valid = f"a whole number in {_interval(lo, hi, False, False)}"
-    if isinstance(value, bool):
-        raise ParameterError(name, value, valid)
-    try:
-        n = operator.index(value)  # type: ignore[arg-type]
-    except TypeError:
-        raise ParameterError(name, value, valid) from None
-    if (lo is not None and n < lo) or (hi is not None and n > hi):
-        raise ParameterError(name, value, valid)
-    return n
+    return _checks.integer(name, value, lo, hi, error=ParameterError)
 
 
 def choice(kind: str, value: object, choices: Iterable[str]) -> str:

@@ -1,4 +1,6 @@
-"""Argument checks for the instruments: each raises a named :class:`InstrumentParameterError`."""
+"""Argument checks: each raises a named :class:`InstrumentParameterError` (or the subclass a caller
+passes as ``error`` - rig.validate passes rig.errors.ParameterError, so both packages share one
+implementation while sensors stays free of rig imports)."""
 
 from __future__ import annotations
 
@@ -26,35 +28,48 @@ def number(
     *,
     lo_open: bool = False,
     hi_open: bool = False,
+    allow_inf: bool = False,
+    error: type[InstrumentParameterError] = InstrumentParameterError,
 ) -> float:
-    """Return ``value`` as a finite float inside the interval, else raise (NaN/inf always rejected)."""
+    """Return ``value`` as a float inside the interval, else raise ``error``.
+
+    ``lo``/``hi``: bounds (None: unbounded); ``*_open`` excludes the bound itself. NaN is always
+    rejected, infinity unless ``allow_inf``; booleans and strings are not numbers.
+    """
     valid = _interval(lo, hi, lo_open, hi_open)
     if isinstance(value, (bool, str, bytes)):
-        raise InstrumentParameterError(name, value, f"a real number in {valid}")
+        raise error(name, value, f"a real number in {valid}")
     try:
         x = float(value)  # type: ignore[arg-type]
     except (TypeError, ValueError):
-        raise InstrumentParameterError(name, value, f"a real number in {valid}") from None
-    if not math.isfinite(x):
-        raise InstrumentParameterError(name, value, f"a finite number in {valid}")
+        raise error(name, value, f"a real number in {valid}") from None
+    if math.isnan(x) or (math.isinf(x) and not allow_inf):
+        raise error(name, value, f"a finite number in {valid}")
     if lo is not None and (x < lo or (lo_open and x == lo)):
-        raise InstrumentParameterError(name, value, valid)
+        raise error(name, value, valid)
     if hi is not None and (x > hi or (hi_open and x == hi)):
-        raise InstrumentParameterError(name, value, valid)
+        raise error(name, value, valid)
     return x
 
 
-def integer(name: str, value: object, lo: int | None = None, hi: int | None = None) -> int:
-    """Return ``value`` as an int if it is a whole number (not a bool) inside [lo, hi], else raise."""
+def integer(
+    name: str,
+    value: object,
+    lo: int | None = None,
+    hi: int | None = None,
+    *,
+    error: type[InstrumentParameterError] = InstrumentParameterError,
+) -> int:
+    """Return ``value`` as an int if it is a whole number (not a bool) inside [lo, hi], else raise ``error``."""
     valid = f"a whole number in {_interval(lo, hi, False, False)}"
     if isinstance(value, bool):
-        raise InstrumentParameterError(name, value, valid)
+        raise error(name, value, valid)
     try:
         n = operator.index(value)  # type: ignore[arg-type]
     except TypeError:
-        raise InstrumentParameterError(name, value, valid) from None
+        raise error(name, value, valid) from None
     if (lo is not None and n < lo) or (hi is not None and n > hi):
-        raise InstrumentParameterError(name, value, valid)
+        raise error(name, value, valid)
     return n
 
 

@@ -37,7 +37,11 @@ def parse_max_abs(items: Sequence[str]) -> dict[str, float]:
         name, sep, value = item.partition("=")
         if not sep or not name.strip():
             raise ParameterError("--max-abs", item, "QUANTITY=VALUE, e.g. nu_v=0.02")
-        result[name.strip()] = validate.number(f"--max-abs {name.strip()}", value.strip(), 0.0)
+        try:
+            limit = float(value)
+        except ValueError:
+            raise ParameterError(f"--max-abs {name.strip()}", value.strip(), "a number >= 0") from None
+        result[name.strip()] = validate.number(f"--max-abs {name.strip()}", limit, 0.0)
     return result
 
 
