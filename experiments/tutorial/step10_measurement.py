@@ -1,0 +1,98 @@
+"""Tutorial step 10: the paper's measurement method on stand A (seed 000 section 3.1.2, eqs. 29-35).
+
+Runs the stand-A scene (default: the built-in `default` scene, as `rig run` does): the brake
+moment T2 on wheel 2 moves the rolling point along the contact line; at each set-point the
+counters give i_k, the dynamometer F_y, the tangent balance T2. The reduction turns them into
+l/a (eq. 30), alpha' (eq. 21), the model's nu_T, nu_v, nu_0 at that state (eqs. 26-28) and
+finally mu_v = F_y/(F_N nu_v) (eq. 33) and mu_T (eq. 35), each with its uncertainty - to be held
+against the mu = 0.4 the virtual stand was built with.
+
+    python experiments/tutorial/step10_measurement.py [-o out/tutorial] [--scene default]
+
+Writes the run (log.h5, reduced.csv, summary.txt, ...) into <output>/step10_run_<scene>/ and
+step10_measurement.png and step10_measurement.csv (readings and reduced values per point).
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+import pandas as pd
+from matplotlib.figure import Figure
+
+from rig.logbook import point_indices, read_point
+from rig.runner import run_scene
+from rig.scenes import load_scene
+
+STEM = "step10_measurement"
+TEX = {"nu_T": r"$\nu_T$", "nu_v": r"$\nu_v$", "nu_0": r"$\nu_0$", "mu_v": r"$\mu_v$ (eq. 33)",
+       "mu_T": r"$\mu_T$ (eq. 35)"}
+
+
+def arguments(argv: list[str] | None) -> argparse.Namespace:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("-o", "--output", type=Path, default=Path("out/tutorial"), help="output folder")
+    parser.add_argument("--scene", default="default",
+                        help="stand-A scene: built-in name or .toml path (default: default; fast: "
+                             "experiments/tutorial/stand_a_quick.toml)")
+    return parser.parse_args(argv)
+
+
+def readings(log_path: Path) -> pd.DataFrame:
+    """Per point: brake set-point [N m] and the balance reading T2 [N m] from the log."""
+    rows = []
+    for index in point_indices(log_path):
+        record = read_point(log_path, index)
+        rows.append(dict(point=index, brake_setpoint_N_m=record.settings["brake_setpoint"].value,
+                         T2_N_m=record.readings["T2"].value))
+    return pd.DataFrame(rows).set_index("point")
+
+
+def main(argv: list[str] | None = None) -> list[Path]:
+    args = arguments(argv)
+    args.output.mkdir(parents=True, exist_ok=True)
+    scene = load_scene(args.scene)
+    run_dir = args.output / f"step10_run_{scene.name}"
+    report = run_scene(scene, run_dir, progress=False)
+    reduced = pd.read_csv(run_dir / "reduced.csv", index_col="point")
+    table = readings(run_dir / "log.h5").join(reduced, how="inner")
+    columns = ["brake_setpoint_N_m", "T2_N_m", "i_k", "F_y_N", "l_over_a", "u_l_over_a", "true_l_over_a",
+               "alpha_prime", "nu_T", "nu_v", "nu_0", "mu_v", "u_mu_v", "mu_T", "u_mu_T", "true_mu_v", "true_mu_T"]
+    csv = args.output / f"{STEM}.csv"
+    table[columns].to_csv(csv)
+
+    fig = Figure(figsize=(15, 4.4), layout="constrained")
+    ax1, ax2, ax3, ax4 = fig.subplots(1, 4)
+    ax1.plot(table.T2_N_m, table.i_k, "o-", label=r"counters: $i_k = N_2 z_1/(N_1 z_2)$")
+    ax1.set(xlabel="balance: brake moment T2 [N m]", ylabel=r"$i_k$ [1]", title="1. what the instruments read")
+    force = ax1.twinx()
+    force.plot(table.T2_N_m, table.F_y_N, "s--", color="C1", label=r"dynamometer: $F_y$")
+    force.set_ylabel(r"$F_y$ [N]", color="C1")
+    handles = ax1.get_legend_handles_labels()[0] + force.get_legend_handles_labels()[0]
+    ax1.legend(handles, [h.get_label() for h in handles], loc="lower center", fontsize=8)
+    ax2.errorbar(table.T2_N_m, table.l_over_a, yerr=table.u_l_over_a, fmt="o", capsize=3, label="l/a from i_k (eq. 30)")
+    ax2.plot(table.T2_N_m, table.true_l_over_a, "k-", lw=0.8, label="truth (simulation)")
+    ax2.set(xlabel="brake moment T2 [N m]", ylabel="l/a [1]", title="2. the brake moves the rolling point")
+    ax2.legend(fontsize=8)
+    for index, key in enumerate(("nu_T", "nu_v", "nu_0")):
+        ax3.plot(table.l_over_a, table[key], "o-", color=f"C{index}", label=TEX[key])
+    ax3.set(xlabel="l/a", ylabel="[1]",
+            title=rf"3. model at the measured state ($\alpha'$ = {table.alpha_prime.median():.2f})")
+    ax3.legend(fontsize=8)
+    for index, key in enumerate(("mu_v", "mu_T")):
+        ax4.errorbar(table.l_over_a, table[key], yerr=table[f"u_{key}"], fmt="os"[index], capsize=3,
+                     color=f"C{index + 3}", label=TEX[key])
+    ax4.plot(table.l_over_a, table.true_mu_T, "k-", lw=0.8, label=r"truth $\mu$")
+    ax4.set(xlabel="l/a", ylabel=r"$\mu$ [1]", ylim=(0.0, 0.8), title="4. friction coefficients recovered")
+    ax4.legend(fontsize=8)
+    for ax in (ax1, ax2, ax3, ax4):
+        ax.grid(alpha=0.3)
+    fig.suptitle(f"scene {scene.name}: {report.in_log} points, {len(report.failures)} failed", fontsize=10)
+    png = args.output / f"{STEM}.png"
+    fig.savefig(png, dpi=110)
+    return [png, csv]
+
+
+if __name__ == "__main__":
+    print("wrote", *main())
