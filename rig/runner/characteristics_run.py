@@ -37,7 +37,7 @@ def run_characteristics_scene(scene: CharacteristicsScene, out_dir: Path, *, pro
         "friction-rig run summary",
         f"scene:       {scene.name} ({scene.source})",
         f"             {scene.description}",
-        f"kind:        contact characteristics (no stand)",
+        "kind:        contact characteristics (no stand)",
         f"models:      {', '.join(scene.models)}; n = {scene.n}; poisson {scene.poisson:g}; "
         f"effects: {', '.join(f'{k} = {v:g}' for k, v in scene.effects.items()) or 'none'}",
         *([f"variants:    {', '.join(scene.variants)} (kinematic model)"] if scene.variants else []),

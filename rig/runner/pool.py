@@ -9,8 +9,9 @@ state; the stand class must be importable by its module path).
 
 The logbook's records are read-only mappings (``types.MappingProxyType``), which pickle cannot
 handle; a reducer registered on multiprocessing's pickler (only there) sends them as dicts.
-An error inside a worker comes back as :class:`WorkerError` naming the point and the original
-error (rig's exceptions do not survive pickling with their arguments).
+An error inside a worker comes back as text (:class:`PointFailure`, with its traceback) and is
+raised in the parent as :class:`WorkerError` naming the point. ``simulate_point`` and
+``accept`` are shared with the Dask path (rig.runner.dask_pool).
 """
 
 from __future__ import annotations
@@ -42,13 +43,39 @@ ForkingPickler.register(types.MappingProxyType, lambda proxy: (_mapping_proxy, (
 
 
 @dataclass(frozen=True)
-class _Failure:
-    """An exception of a worker, as text (picklable)."""
+class PointFailure:
+    """An exception raised while simulating a point in a worker, as text (picklable)."""
 
     point: PlannedPoint
     kind: str
     message: str
     trace: str
+
+    @classmethod
+    def of(cls, point: PlannedPoint, error: BaseException) -> PointFailure:
+        return cls(point, type(error).__name__, str(error), "".join(traceback.format_exception(error)))
+
+    def error(self) -> WorkerError:
+        return WorkerError(f"point {self.point.index} {dict(self.point.settings)}: {self.kind}: "
+                           f"{self.message}\n{self.trace}")
+
+
+def simulate_point(stand, scene: StandScene, point: PlannedPoint) -> PointResult | PointFailure:
+    """One point with the operator (the task of a worker); any error comes back as text."""
+    results: list[PointResult] = []
+    try:
+        run_operator(stand, [point], scene.procedure, scene.seed, results.append)
+    except Exception as error:  # noqa: BLE001 - sent back whole, raised in the parent as WorkerError
+        return PointFailure.of(point, error)
+    return results[0]
+
+
+def accept(result: PointResult | PointFailure, scene: StandScene, deliver: Callable[[PointResult], None]) -> bool:
+    """Deliver a worker's result in point order; True when the STOP policy ends the sweep here."""
+    if isinstance(result, PointFailure):
+        raise result.error()
+    deliver(result)
+    return result.failure is not None and scene.procedure.on_settle_timeout is TimeoutPolicy.STOP
 
 
 _worker: dict = {}
@@ -60,14 +87,8 @@ def _start_worker(scene: StandScene) -> None:
     _worker.update(scene=scene, stand=stand)
 
 
-def _simulate(point: PlannedPoint) -> PointResult | _Failure:
-    scene: StandScene = _worker["scene"]
-    results: list[PointResult] = []
-    try:
-        run_operator(_worker["stand"], [point], scene.procedure, scene.seed, results.append)
-    except Exception as error:  # noqa: BLE001 - sent back whole, raised in the parent as WorkerError
-        return _Failure(point, type(error).__name__, str(error), traceback.format_exc())
-    return results[0]
+def _simulate(point: PlannedPoint) -> PointResult | PointFailure:
+    return simulate_point(_worker["stand"], _worker["scene"], point)
 
 
 def run_pool(scene: StandScene, points: Sequence[PlannedPoint], jobs: int,
@@ -83,11 +104,7 @@ def run_pool(scene: StandScene, points: Sequence[PlannedPoint], jobs: int,
             except BrokenProcessPool as error:  # a worker died, e.g. the stand failed to build or calibrate
                 raise WorkerError(f"a worker process of the pool failed ({error}); run with --jobs 1 to see the "
                                   "error of the stand") from None
-            if isinstance(result, _Failure):
-                raise WorkerError(f"point {result.point.index} {dict(result.point.settings)}: {result.kind}: "
-                                  f"{result.message}\n{result.trace}")
-            deliver(result)
-            if result.failure is not None and scene.procedure.on_settle_timeout is TimeoutPolicy.STOP:
+            if accept(result, scene, deliver):
                 break
     finally:
         pool.shutdown(wait=True, cancel_futures=True)

@@ -3,8 +3,10 @@
 Order: open the log (resuming an interrupted run of the same scene) -> build the stand with the
 scene's effects only -> calibrate once -> sweep the points not yet logged, writing each as it
 finishes -> finalize log.h5 -> reduce (reduced.csv and ``/reduced`` in the log) -> figure ->
-summary.txt. A point that does not settle is reported (policy: rig.runner.operator); any other
-error propagates with the staging folder intact, so running the scene again resumes.
+summary.txt. The points run in this process, on a local process pool (``jobs`` > 1) or on a
+Dask cluster (``scheduler``: a scheduler's address; rig.runner.dask_pool). A point that does
+not settle is reported (policy: rig.runner.operator); any other error propagates with the
+staging folder intact, so running the scene again resumes.
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ from pathlib import Path
 from rig import validate
 from rig.campaigns import paper_figure
 from rig.logbook import LogWriter, RunMetadata, point_indices, read_point, utc_timestamp
+from rig.runner.dask_pool import check_scheduler
 from rig.runner.figures import FIGURE_NAME, reduced_vs_truth_figure
 from rig.runner.reduction import Reduction, read_truth_if_any, reduce_to_files
 from rig.runner.summary import RunFacts, summary_text
@@ -52,20 +55,25 @@ def _calibration_names(log_path: Path) -> list[str]:
     return sorted(read_point(log_path, indices[0]).calibration) if indices else []
 
 
-def run_stand_scene(scene: StandScene, out_dir: Path, *, jobs: int = 1, progress: bool | None = None) -> RunReport:
-    """Run ``scene`` into ``out_dir`` (created if needed); ``jobs`` processes (1: this one)."""
+def run_stand_scene(scene: StandScene, out_dir: Path, *, jobs: int = 1, scheduler: str | None = None,
+                    progress: bool | None = None) -> RunReport:
+    """Run ``scene`` into ``out_dir`` (created if needed); ``jobs`` processes (1: this one), or the
+    workers of the Dask scheduler at address ``scheduler`` (then ``jobs`` must be 1)."""
     jobs = validate.integer("jobs", jobs, 1, MAX_JOBS)
+    if scheduler is not None:
+        scheduler = check_scheduler(scheduler, jobs)
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     log_path = out_dir / LOG_NAME
     writer = LogWriter(log_path, RunMetadata(scene.text, scene.seed, scene.stand, utc_timestamp()))
     plan = scene.procedure.points()
     todo = [point for point in plan if point.index not in writer.done]
-    serial = jobs == 1 or len(todo) <= 1
+    serial = scheduler is None and (jobs == 1 or len(todo) <= 1)
     stand = scene.build_stand()
     if serial and todo:
         stand.calibrate(scene.seed)
-    sweep = run_sweep(scene, stand if serial else None, todo, writer, jobs=1 if serial else jobs, progress=progress)
+    sweep = run_sweep(scene, stand if serial else None, todo, writer, jobs=1 if serial else jobs, progress=progress,
+                      scheduler=scheduler)
     writer.finalize()
 
     files, problems = [LOG_NAME], []
@@ -89,7 +97,7 @@ def run_stand_scene(scene: StandScene, out_dir: Path, *, jobs: int = 1, progress
     files.append(SUMMARY_NAME)
     facts = RunFacts(
         planned=len(plan), resumed=len(plan) - len(todo), written_now=len(sweep.written), failures=sweep.failures,
-        stopped=sweep.stopped, jobs=jobs, settle_times_s=_settle_times(log_path),
+        stopped=sweep.stopped, jobs=jobs, scheduler=scheduler, settle_times_s=_settle_times(log_path),
         calibration=_calibration_names(log_path), operator_time_s=sweep.operator_time_s,
     )
     text = summary_text(scene, facts, None if reduction is None else reduction.table, problems, files, campaign_lines)

@@ -79,6 +79,7 @@ class RunFacts:
     failures: Sequence[Failure]
     stopped: bool
     jobs: int
+    scheduler: str | None
     settle_times_s: Sequence[float]
     calibration: Sequence[str]
     operator_time_s: float | None
@@ -92,7 +93,8 @@ def summary_text(scene: StandScene, facts: RunFacts, table: pd.DataFrame | None,
         "friction-rig run summary",
         f"scene:       {scene.name} ({scene.source})",
         f"             {scene.description}",
-        f"stand:       {scene.stand}, drive {scene.drive.value}, seed {scene.seed}, jobs {facts.jobs}",
+        f"stand:       {scene.stand}, drive {scene.drive.value}, seed {scene.seed}, "
+        + (f"Dask scheduler {facts.scheduler}" if facts.scheduler else f"jobs {facts.jobs}"),
         f"contact:     {c.model}, n = {c.n if c.n is not None else 'default'}, poisson {c.poisson:g}, "
         f"{'surrogate table' if c.surrogate else 'direct calls'}",
         f"parameters:  {_settings_text(dict(scene.parameters)) or 'stand defaults'}",

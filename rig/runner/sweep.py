@@ -3,9 +3,10 @@
 Points already in the log's staging folder (an interrupted run of the same scene) are skipped:
 rig.logbook.LogWriter resumes, and since every point is simulated from its own arguments the
 resumed log equals an uninterrupted one. ``jobs`` = 1 runs the operator in this process on one
-simpy clock; ``jobs`` > 1 runs the points on a local process pool (rig.runner.pool) with
-identical results. A tqdm progress bar counts the points; it is silent when stderr is not a
-terminal (or when ``progress`` is False).
+simpy clock; ``jobs`` > 1 runs the points on a local process pool (rig.runner.pool), a
+``scheduler`` address on a Dask cluster (rig.runner.dask_pool), both with identical results.
+A tqdm progress bar counts the points; it is silent when stderr is not a terminal (or when
+``progress`` is False).
 
 Each point's truth gets one entry from the operator: ``operator_settle_time`` [s], the
 simulated time the point took to settle as ``settle`` reported it (read back for the summary,
@@ -22,6 +23,7 @@ from tqdm import tqdm
 
 from rig.errors import ParameterError
 from rig.logbook import LogWriter, Quantity
+from rig.runner.dask_pool import run_dask
 from rig.runner.operator import PointResult, run_operator
 from rig.runner.pool import run_pool
 from rig.scenes.procedure import PlannedPoint, TimeoutPolicy
@@ -44,7 +46,7 @@ class Failure:
 @dataclass
 class SweepResult:
     """What this invocation simulated: indices written, failures, whether the run stopped early,
-    and the operator time [s] of the serial clock (None with a process pool)."""
+    and the operator time [s] of the serial clock (None with a process pool or a Dask cluster)."""
 
     written: list[int] = field(default_factory=list)
     failures: list[Failure] = field(default_factory=list)
@@ -58,11 +60,12 @@ def show_progress(progress: bool | None) -> bool:
 
 
 def run_sweep(scene: StandScene, stand: Stand | None, points: Sequence[PlannedPoint], writer: LogWriter, *,
-              jobs: int, progress: bool | None) -> SweepResult:
+              jobs: int, progress: bool | None, scheduler: str | None = None) -> SweepResult:
     """Simulate ``points`` and write each finished one into ``writer``.
 
-    ``stand``: a calibrated stand for the serial path (``jobs`` == 1); ignored with a pool, whose
-    workers build and calibrate their own.
+    ``stand``: a calibrated stand for the serial path (``jobs`` == 1, no ``scheduler``); ignored
+    with a pool or a cluster, whose workers build and calibrate their own. ``scheduler``: address
+    of a Dask scheduler (rig.runner.dask_pool.check_scheduler; ``jobs`` is then 1), None: local.
     """
     result = SweepResult()
     with tqdm(total=len(points), desc=f"scene {scene.name}", unit="point", disable=not show_progress(progress),
@@ -82,7 +85,9 @@ def run_sweep(scene: StandScene, stand: Stand | None, points: Sequence[PlannedPo
                 result.written.append(point.index)
             bar.update(1)
 
-        if jobs == 1:
+        if scheduler is not None:
+            run_dask(scene, points, scheduler, deliver)
+        elif jobs == 1:
             if stand is None:
                 raise ParameterError("stand", None, "a calibrated stand for a serial sweep")
             result.operator_time_s = run_operator(stand, points, scene.procedure, scene.seed, deliver)

@@ -1,0 +1,139 @@
+"""Operating points on a Dask distributed cluster (``--scheduler ADDRESS``), results identical to a serial run.
+
+The contract of rig.runner.pool, on a cluster: the same inputs (the scene, the planned points),
+the results delivered in point order, so the log, the failures and the STOP policy are those of
+a serial run; an error inside a point comes back as rig.runner.pool.WorkerError naming the
+point, the error type, its text and the worker's traceback.
+
+One task simulates one point with the operator of rig.runner.operator. A worker thread builds
+its stand from the scene and calibrates it once per run (a pure function of the run seed by the
+contract, so every worker holds the records the serial run holds), then keeps it for the run's
+further points. Stands are kept per (run, worker thread) - a worker with several threads never
+shares one stand between two points at once - for the last MAX_CACHED_RUNS runs only.
+
+dask and distributed are the optional extra ``dask``: they are imported when a sweep is sent to
+a scheduler, never on import of rig; without them, a ParameterError names the extra and the
+install command. The workers must import the same friction-rig version as the client (the log
+records the client's version; a worker with another one fails the point) and the stand's module
+by its path. The logbook's read-only records (types.MappingProxyType), which pickle refuses,
+travel by cloudpickle, distributed's fallback serializer, and arrive as read-only mappings.
+"""
+
+from __future__ import annotations
+
+import threading
+import uuid
+from collections import OrderedDict
+from collections.abc import Callable, Sequence
+
+import rig
+from rig.errors import ParameterError
+from rig.runner.operator import PointResult
+from rig.runner.pool import PointFailure, WorkerError, accept, simulate_point
+from rig.scenes.procedure import PlannedPoint
+from rig.scenes.stand_scene import StandScene
+from rig.stands.base import Stand
+
+EXTRA = "dask"
+"""The optional extra of friction-rig that brings dask and distributed."""
+
+INSTALL = 'pip install "friction-rig[dask]"'
+"""The command that installs the extra."""
+
+CONNECT_TIMEOUT_S = 30.0
+"""How long to try to reach the scheduler [s]."""
+
+MAX_CACHED_RUNS = 2
+"""A worker keeps the calibrated stands of this many most recent runs."""
+
+_stands: OrderedDict[str, dict[int, Stand]] = OrderedDict()  # run token -> {thread id: stand}
+_stands_lock = threading.Lock()
+
+
+def check_scheduler(address: object, jobs: int) -> str:
+    """``address`` if it can name a Dask scheduler (no spaces), ``jobs`` is 1 and the extra is
+    installed (imported here, before a run writes anything), else ParameterError.
+
+    A scheduler and ``jobs`` > 1 exclude each other: the cluster's workers set the parallelism.
+    """
+    if not isinstance(address, str) or not address or any(char.isspace() for char in address):
+        raise ParameterError("scheduler", address, "a Dask scheduler address such as tcp://127.0.0.1:8786")
+    if jobs != 1:
+        raise ParameterError("jobs", jobs, "1 with a Dask scheduler (its workers set the parallelism)",
+                             hint=f"scheduler = {address!r}; drop --jobs or the scheduler")
+    _client_class(address)
+    return address
+
+
+def _client_class(address: str) -> type:
+    """distributed.Client, imported now; ParameterError naming the extra if it is not installed."""
+    try:
+        from distributed import Client
+    except ImportError as error:
+        missing = error.name or "distributed"
+        raise ParameterError("scheduler", address, f"an address used with the optional {EXTRA!r} extra installed",
+                             hint=f"{missing} is not installed; install the extra with: {INSTALL}") from None
+    return Client
+
+
+def _stand_for(run: str, scene: StandScene) -> Stand:
+    """This thread's calibrated stand of run ``run`` (built and calibrated on first use)."""
+    thread = threading.get_ident()
+    with _stands_lock:
+        stand = _stands.get(run, {}).get(thread)
+    if stand is not None:
+        return stand
+    stand = scene.build_stand()
+    stand.calibrate(scene.seed)
+    with _stands_lock:
+        _stands.setdefault(run, {})[thread] = stand
+        _stands.move_to_end(run)
+        while len(_stands) > MAX_CACHED_RUNS:
+            _stands.popitem(last=False)
+    return stand
+
+
+def _simulate(run: str, version: str, scene: StandScene, point: PlannedPoint) -> PointResult | PointFailure:
+    """The task: one point on a worker; any error comes back as text (picklable)."""
+    if rig.__version__ != version:
+        return PointFailure.of(point, WorkerError(f"the worker has friction-rig {rig.__version__}, the client {version}"))
+    try:
+        stand = _stand_for(run, scene)
+    except Exception as error:  # noqa: BLE001 - the stand failed to build or calibrate on the worker
+        return PointFailure.of(point, error)
+    return simulate_point(stand, scene, point)
+
+
+def _connect(address: str):
+    """A distributed.Client of the scheduler at ``address`` (not made the default client)."""
+    client_class = _client_class(address)
+    try:
+        return client_class(address, timeout=CONNECT_TIMEOUT_S, set_as_default=False)
+    except (OSError, TimeoutError, ValueError) as error:
+        reason = str(error)  # raised below, outside this block: the half-made client is not kept alive
+    raise ParameterError("scheduler", address, "the address of a running Dask scheduler, e.g. tcp://127.0.0.1:8786",
+                         hint=f"could not connect: {reason}")
+
+
+def run_dask(scene: StandScene, points: Sequence[PlannedPoint], address: str,
+             deliver: Callable[[PointResult], None]) -> None:
+    """Simulate ``points`` on the cluster of the scheduler at ``address``; ``deliver`` gets each result in
+    point order. Points not needed after a STOP are cancelled."""
+    client = _connect(address)
+    run = uuid.uuid4().hex
+    futures: list = []
+    try:
+        futures = [client.submit(_simulate, run, rig.__version__, scene, point, key=f"rig-point-{point.index}-{run}")
+                   for point in points]
+        for point, future in zip(points, futures):
+            try:
+                result = future.result()
+            except Exception as error:  # noqa: BLE001 - a worker died, the task was lost or not (un)picklable
+                raise WorkerError(f"point {point.index} {dict(point.settings)}: the Dask cluster did not run it "
+                                  f"({type(error).__name__}: {error})") from error
+            if accept(result, scene, deliver):
+                break
+    finally:
+        if futures:
+            client.cancel(futures)
+        client.close()

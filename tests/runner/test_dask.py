@@ -1,0 +1,246 @@
+"""The Dask path (``--scheduler``) gives the log and reduced table of a one-process run (issue 5, acceptance 4).
+
+One LocalCluster (2 worker processes, 1 thread each) serves the module. The reference is always a
+``jobs`` = 1 run of the same seeded scene in another folder: logs are compared by content
+(records, truth, metadata but the start time), reduced.csv by text. Scenes: the fake stand of
+tests/runner/fake_stand.py (with two points that do not settle) and a short stand-A scene. The
+stands are sent to the workers by module path, so the stands defined here are importable too.
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from collections import OrderedDict
+from concurrent.futures import ThreadPoolExecutor
+from unittest import mock
+
+import numpy as np
+import pandas as pd
+import pytest
+from distributed import Client, LocalCluster
+
+import rig.runner.dask_pool
+import rig.stands
+from rig.errors import ParameterError
+from rig.logbook import LogWriter, RunMetadata, utc_timestamp
+from rig.runner import run_scene
+from rig.runner.pool import WorkerError
+from rig.scenes import load_scene, parse_scene
+from tests.runner.fake_stand import NO_FIGURES, FakeStand, register, scene_text
+from tests.runner.logs import assert_same_log
+
+SWEEP = NO_FIGURES | {"load_N = [5.0, 10.0, 20.0, 25.0]": "load_N = [5.0, 10.0, 50.0, 55.0, 60.0, 8.0]",
+                      "mu = 0.3": "mu = 0.3\nsettle_tau_s = 1.0"}  # points 2 (10 -> 50 N) and 5 do not settle
+STOP = SWEEP | {"gate_time_s = 1.0": 'gate_time_s = 1.0\non_settle_timeout = "stop"'}
+
+STAND_A_SHORT = {  # the built-in default scene, cheaper: fastsim n = 8, direct calls, 3 points, 1 s gates
+    'model = "kinematic"': 'model = "fastsim"',
+    "n = 16 ": "n = 8 ",
+    "surrogate = true ": "surrogate = false ",
+    "{ start = -1.6, stop = 1.6, num = 9 }": "[-1.2, 0.0, 1.2]",
+    "gate_time_s = 4.0 ": "gate_time_s = 1.0 ",
+}
+
+
+class BrokenStand(FakeStand):
+    """The fake stand whose point 1 raises (a stand's bug, not a settle timeout)."""
+
+    def start_point(self, index, settings, previous, seed):
+        if index == 1:
+            raise RuntimeError("stand bug at point 1")
+        return super().start_point(index, settings, previous, seed)
+
+
+def _cached_calibrations() -> list[list[int]]:
+    """On a worker: per run it keeps (rig.runner.dask_pool), the calibration count of each thread's stand."""
+    return [[stand.calibrations for stand in run.values()] for run in rig.runner.dask_pool._stands.values()]
+
+
+@pytest.fixture(scope="module")
+def scheduler(tmp_path_factory):
+    cache = tmp_path_factory.mktemp("rig_cache")
+    with LocalCluster(n_workers=2, processes=True, threads_per_worker=1, dashboard_address=":0",
+                      env={"RIG_CACHE_DIR": str(cache)}) as cluster:
+        yield cluster.scheduler_address
+
+
+@pytest.fixture(autouse=True)
+def _stands(monkeypatch, tmp_path):
+    register(monkeypatch)
+    monkeypatch.setitem(rig.stands.STANDS, "broken", f"{__name__}:BrokenStand")
+    monkeypatch.setenv("RIG_CACHE_DIR", str(tmp_path / "cache"))
+
+
+def _same_outputs(one, other) -> None:
+    assert_same_log(one / "log.h5", other / "log.h5")
+    assert (one / "reduced.csv").read_text() == (other / "reduced.csv").read_text()
+
+
+def test_fake_sweep_on_dask_equals_one_job(scheduler, tmp_path):
+    scene = parse_scene(scene_text(SWEEP), name="fake")
+    one = run_scene(scene, tmp_path / "one", progress=False)
+    cluster = run_scene(scene, tmp_path / "dask", scheduler=scheduler, progress=False)
+    assert [f.index for f in one.failures] == [f.index for f in cluster.failures] == [2, 5]
+    assert one.failures == cluster.failures and cluster.in_log == 4 and not cluster.stopped
+    _same_outputs(tmp_path / "one", tmp_path / "dask")
+    with Client(scheduler, set_as_default=False) as client:
+        runs = [run for worker in client.run(_cached_calibrations).values() for run in worker]
+    assert runs and all(run == [1] for run in runs)  # per run, one stand per worker thread, calibrated once
+
+
+def test_dask_stops_where_one_job_stops(scheduler, tmp_path):
+    scene = parse_scene(scene_text(STOP), name="fake")
+    one = run_scene(scene, tmp_path / "one", progress=False)
+    cluster = run_scene(scene, tmp_path / "dask", scheduler=scheduler, progress=False)
+    assert one.stopped and cluster.stopped and one.in_log == cluster.in_log == 2
+    assert [f.index for f in cluster.failures] == [2]
+    _same_outputs(tmp_path / "one", tmp_path / "dask")
+
+
+def test_short_stand_a_scene_on_dask_equals_one_job(scheduler, tmp_path):
+    text = load_scene("default").text
+    for old, new in STAND_A_SHORT.items():
+        assert old in text, old
+        text = text.replace(old, new)
+    scene = parse_scene(text + "\n[outputs]\nfigures = false\n", name="default_short")
+    one = run_scene(scene, tmp_path / "one", progress=False)
+    cluster = run_scene(scene, tmp_path / "dask", scheduler=scheduler, progress=False)
+    assert one.failures == cluster.failures == () and cluster.in_log == 3
+    _same_outputs(tmp_path / "one", tmp_path / "dask")
+    table = pd.read_csv(tmp_path / "dask" / "reduced.csv", index_col="point")
+    assert np.isfinite(table[["mu_v", "l_over_a"]].to_numpy()).all()  # compared numbers, not NaN == NaN
+
+
+def test_an_interrupted_run_resumes_on_dask_to_the_same_log(scheduler, tmp_path):
+    scene = parse_scene(scene_text(SWEEP), name="fake")
+    run_scene(scene, tmp_path / "one", progress=False)
+    original = FakeStand.start_point
+
+    def start_point(self, index, *args):
+        if index == 3:
+            raise KeyboardInterrupt  # the local operator is stopped after points 0 and 1 were written
+        return original(self, index, *args)
+
+    with mock.patch.object(FakeStand, "start_point", start_point), pytest.raises(KeyboardInterrupt):
+        run_scene(scene, tmp_path / "dask", progress=False)
+    report = run_scene(scene, tmp_path / "dask", scheduler=scheduler, progress=False)
+    assert report.resumed == 2 and report.in_log == 4 and [f.index for f in report.failures] == [2, 5]
+    _same_outputs(tmp_path / "one", tmp_path / "dask")
+
+
+def test_an_error_in_a_point_comes_back_naming_the_point(scheduler, tmp_path):
+    scene = parse_scene(scene_text(NO_FIGURES | {'stand = "fake"': 'stand = "broken"'}), name="broken")
+    with pytest.raises(WorkerError, match=r"(?s)point 1 \{'load_N': 10\.0.*RuntimeError: stand bug at point 1"):
+        run_scene(scene, tmp_path / "run", scheduler=scheduler, progress=False)
+    resumed = LogWriter(tmp_path / "run" / "log.h5", RunMetadata(scene.text, scene.seed, scene.stand, utc_timestamp()))
+    assert resumed.done == {0}  # point 0 was written before the error: running again resumes
+
+
+class _Done:
+    def __init__(self, value):
+        self.value = value
+
+    def result(self):
+        return self.value
+
+
+class _Lost:
+    def result(self):
+        raise RuntimeError("worker lost")  # what distributed.KilledWorker or a cancelled task does
+
+
+class _ClientLosingPoint1:
+    """Stand-in for distributed.Client: runs tasks here, loses point 1's; records cancel and close."""
+
+    def __init__(self):
+        self.cancelled, self.closed = [], False
+
+    def submit(self, function, *args, key):
+        return _Lost() if args[-1].index == 1 else _Done(function(*args))
+
+    def cancel(self, futures):
+        self.cancelled = list(futures)
+
+    def close(self):
+        self.closed = True
+
+
+def test_a_lost_task_is_a_worker_error_naming_the_point(monkeypatch, tmp_path):
+    client = _ClientLosingPoint1()
+    monkeypatch.setattr(rig.runner.dask_pool, "_connect", lambda address: client)
+    monkeypatch.setattr(rig.runner.dask_pool, "_stands", OrderedDict())  # the stand-in's tasks run here
+    scene = parse_scene(scene_text(NO_FIGURES), name="fake")
+    with pytest.raises(WorkerError, match=r"point 1 \{'load_N': 10\.0.*did not run it \(RuntimeError: worker lost\)"):
+        run_scene(scene, tmp_path / "run", scheduler="tcp://127.0.0.1:8786", progress=False)
+    assert client.closed and len(client.cancelled) == 4
+
+
+def test_each_worker_thread_keeps_its_own_stand_for_the_last_runs(monkeypatch):
+    monkeypatch.setattr(rig.runner.dask_pool, "_stands", OrderedDict())
+    scene = parse_scene(scene_text(NO_FIGURES), name="fake")
+    first = rig.runner.dask_pool._stand_for("run-a", scene)
+    assert rig.runner.dask_pool._stand_for("run-a", scene) is first and first.calibrations == 1
+    with ThreadPoolExecutor(1) as other:
+        second = other.submit(rig.runner.dask_pool._stand_for, "run-a", scene).result()
+    assert second is not first and second.calibrations == 1
+    for run in ("run-b", "run-c"):
+        rig.runner.dask_pool._stand_for(run, scene)
+    assert rig.runner.dask_pool.MAX_CACHED_RUNS == 2 and list(rig.runner.dask_pool._stands) == ["run-b", "run-c"]
+
+
+def test_a_worker_with_another_friction_rig_version_fails_the_point():
+    scene = parse_scene(scene_text(NO_FIGURES), name="fake")
+    point = scene.procedure.points()[0]
+    failure = rig.runner.dask_pool._simulate("run-v", "0.0.0-other", scene, point)
+    assert failure.point == point and failure.kind == "WorkerError"
+    assert failure.message == f"the worker has friction-rig {rig.__version__}, the client 0.0.0-other"
+
+
+def test_the_cli_runs_on_a_scheduler_and_refuses_jobs_with_it(scheduler, tmp_path, capsys):
+    import rig.cli
+
+    path = tmp_path / "fake.toml"
+    path.write_text(scene_text(SWEEP), encoding="utf-8")
+    assert rig.cli.main(["run", str(path), "-o", str(tmp_path / "dask"), "--scheduler", scheduler]) == 1
+    assert rig.cli.main(["run", str(path), "-o", str(tmp_path / "one")]) == 1
+    _same_outputs(tmp_path / "one", tmp_path / "dask")
+    capsys.readouterr()
+    assert rig.cli.main(["run", str(path), "-o", str(tmp_path / "x"), "-j", "2", "--scheduler", scheduler]) == 2
+    assert "jobs = 2 is not valid; valid: 1 with a Dask scheduler" in capsys.readouterr().err
+    assert not (tmp_path / "x").exists()
+
+
+@pytest.mark.parametrize("address", ["", "tcp://host :8786", 8786])
+def test_a_malformed_address_is_refused(address, tmp_path):
+    scene = parse_scene(scene_text(NO_FIGURES), name="fake")
+    with pytest.raises(ParameterError, match="scheduler = .* a Dask scheduler address"):
+        run_scene(scene, tmp_path / "run", scheduler=address, progress=False)
+
+
+def test_an_unreachable_scheduler_is_a_parameter_error(monkeypatch, tmp_path):
+    monkeypatch.setattr(rig.runner.dask_pool, "CONNECT_TIMEOUT_S", 0.5)
+    scene = parse_scene(scene_text(NO_FIGURES), name="fake")
+    with pytest.raises(ParameterError, match="scheduler = 'tcp://127.0.0.1:1' .* \\(could not connect"):
+        run_scene(scene, tmp_path / "run", scheduler="tcp://127.0.0.1:1", progress=False)
+
+
+def test_without_the_extra_the_error_names_it_and_the_install_command(monkeypatch, tmp_path):
+    monkeypatch.setitem(sys.modules, "distributed", None)  # import distributed -> ImportError
+    scene = parse_scene(scene_text(NO_FIGURES), name="fake")
+    with pytest.raises(ParameterError, match=r"optional 'dask' extra .* pip install \"friction-rig\[dask\]\""):
+        run_scene(scene, tmp_path / "run", scheduler="tcp://127.0.0.1:8786", progress=False)
+    assert not (tmp_path / "run").exists()  # refused before anything is written
+
+
+def test_a_scheduler_with_a_characteristics_scene_is_refused(tmp_path):
+    scene = load_scene("contact_characteristics")
+    with pytest.raises(ParameterError, match="scheduler = 'tcp://127.0.0.1:8786' .* \\(only a stand scene"):
+        run_scene(scene, tmp_path / "run", scheduler="tcp://127.0.0.1:8786", progress=False)
+
+
+def test_rig_does_not_import_dask_unless_asked():
+    code = ("import sys, rig.cli.run, rig.runner, rig.runner.dask_pool; "
+            "print(sorted(m for m in sys.modules if m.split('.')[0] in ('dask', 'distributed')))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "[]"
