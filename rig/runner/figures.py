@@ -2,7 +2,7 @@
 
 One panel per reduced quantity (l/a, c/a, mu_v, mu_T - those the table has); x is the innermost
 swept setting (the point index when nothing is swept); one series per combination of the outer
-swept settings. Points: reduced value +- its standard uncertainty u_<name>; line: true_<name>.
+swept settings and of the settings that tell the procedure's series apart. Points: reduced value +- its standard uncertainty u_<name>; line: true_<name>.
 The paper-like campaign figures are drawn elsewhere.
 """
 
@@ -27,7 +27,7 @@ def _series(table: pd.DataFrame, plan: Sequence[PlannedPoint], procedure: Proced
     if not procedure.sweep:
         return [("", table.index.to_numpy(dtype=float), np.arange(len(table)))], "point index"
     x_name = procedure.sweep[-1][0]
-    outer = [name for name, _ in procedure.sweep[:-1]]
+    outer = [name for name, _ in procedure.sweep[:-1]] + procedure.series_settings
     groups: dict[tuple, list[int]] = {}
     for row, index in enumerate(table.index):
         settings = by_index[int(index)].settings

@@ -60,9 +60,14 @@ def _settings_text(settings: dict[str, float]) -> str:
 
 def _procedure_lines(scene: StandScene) -> list[str]:
     p = scene.procedure
-    swept = "; ".join(f"{name}: {len(axis)} values {min(axis):g} .. {max(axis):g}" for name, axis in p.sweep)
+    lines = []
+    for k, series in enumerate(p.series):
+        swept = "; ".join(f"{name}: {len(axis)} values {min(axis):g} .. {max(axis):g}" for name, axis in series.sweep)
+        label = "procedure:   " if k == 0 else "             "
+        own = {n: v for n, v in series.fixed.items() if n in p.series_settings}
+        lines.append(f"{label}{'series ' + _settings_text(own) + ': ' if own else ''}sweep {swept or 'none'}")
     return [
-        f"procedure:   sweep {swept or 'none'}",
+        *lines,
         f"             fixed {_settings_text(dict(p.fixed)) or 'none'}",
         f"             gate {p.gate_time_s:g} s, settle timeout {p.settle_timeout_s:g} s, repeats {p.repeats}, "
         f"on settle timeout: {p.on_settle_timeout.value}",

@@ -2,16 +2,20 @@
 
 The operating points are the Cartesian product of the swept settings, the first-named sweep
 outermost, each point repeated ``repeats`` times in a row; fixed settings are the same at every
-point. Every setting a stand declares (``Stand.SETTINGS``) must be given, fixed or swept - no
-silent defaults for physical input - and inside its range.
+point. A procedure may instead hold several series (``[[procedure.series]]``), each with its own
+fixed and swept settings, run one after the other - e.g. a brake sweep whose range depends on
+the load; ``[procedure.fixed]`` then holds what all series share, and every series sweeps the
+same settings. Every setting a stand declares (``Stand.SETTINGS``) must be given, fixed or swept
+- no silent defaults for physical input - and inside its range.
 """
 
 from __future__ import annotations
 
 import enum
 import itertools
+import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from rig import validate
 from rig.errors import ParameterError
@@ -21,7 +25,8 @@ MAX_POINTS = 10**6 - 1
 """Most operating points one run may have (the log's point index has six digits)."""
 
 WHERE = "procedure"
-KEYS = ("settle_timeout_s", "gate_time_s", "repeats", "on_settle_timeout", "fixed", "sweep")
+KEYS = ("settle_timeout_s", "gate_time_s", "repeats", "on_settle_timeout", "fixed", "sweep", "series")
+SERIES_KEYS = ("fixed", "sweep")
 
 
 class TimeoutPolicy(enum.Enum):
@@ -51,36 +56,113 @@ class PlannedPoint:
 
 
 @dataclass(frozen=True)
-class Procedure:
-    """What the operator does: fixed settings, swept settings (ordered, outermost first),
-    settle timeout [s], gate time [s], repeats per point and the settle-timeout policy."""
+class Series:
+    """Fixed settings and swept settings (ordered, outermost first) of one series of points."""
 
     fixed: Mapping[str, float]
     sweep: tuple[tuple[str, tuple[float, ...]], ...]
+
+    @property
+    def n_combinations(self) -> int:
+        return math.prod(len(axis) for _, axis in self.sweep)
+
+    def combinations(self) -> list[dict[str, float]]:
+        names = [name for name, _ in self.sweep]
+        return [dict(zip(names, values)) | dict(self.fixed)
+                for values in itertools.product(*(axis for _, axis in self.sweep))]
+
+    def thinned(self, max_values: int) -> Series:
+        """At most ``max_values`` values of each swept setting, spread over its range."""
+        return Series(self.fixed, tuple((name, _spread(axis, max_values)) for name, axis in self.sweep))
+
+
+def _spread(values: tuple[float, ...], count: int) -> tuple[float, ...]:
+    if len(values) <= count:
+        return values
+    picks = sorted({round(k * (len(values) - 1) / max(count - 1, 1)) for k in range(count)})
+    return tuple(values[k] for k in picks)
+
+
+@dataclass(frozen=True)
+class Procedure:
+    """What the operator does: one or more series of points, settle timeout [s], gate time [s],
+    repeats per point and the settle-timeout policy."""
+
+    series: tuple[Series, ...]
     settle_timeout_s: float
     gate_time_s: float
     repeats: int
     on_settle_timeout: TimeoutPolicy
 
     @property
+    def sweep(self) -> tuple[tuple[str, tuple[float, ...]], ...]:
+        """The swept settings (the same names in every series), each with all its values."""
+        names = [name for name, _ in self.series[0].sweep]
+        return tuple((name, tuple(dict.fromkeys(v for s in self.series for v in dict(s.sweep)[name])))
+                     for name in names)
+
+    @property
+    def fixed(self) -> dict[str, float]:
+        """The settings fixed at the same value in every series."""
+        first = self.series[0].fixed
+        return {k: v for k, v in first.items() if all(s.fixed.get(k) == v for s in self.series)}
+
+    @property
+    def series_settings(self) -> list[str]:
+        """Settings fixed within each series but different between series (they label the series)."""
+        return [k for k in self.series[0].fixed if k not in self.fixed]
+
+    @property
     def n_points(self) -> int:
-        """Number of operating points: product of the sweep lengths times repeats."""
-        count = self.repeats
-        for _, axis in self.sweep:
-            count *= len(axis)
-        return count
+        """Number of operating points: the series' combinations times repeats."""
+        return self.repeats * sum(s.n_combinations for s in self.series)
 
     def points(self) -> list[PlannedPoint]:
         """The operating points in run order (indices 0 .. n_points - 1)."""
-        names = [name for name, _ in self.sweep]
         planned: list[PlannedPoint] = []
         previous = None
-        for combination in itertools.product(*(axis for _, axis in self.sweep)):
-            settings = dict(zip(names, combination)) | dict(self.fixed)
-            for repeat in range(self.repeats):
-                planned.append(PlannedPoint(len(planned), settings, previous, repeat))
-                previous = settings
+        for series in self.series:
+            for settings in series.combinations():
+                for repeat in range(self.repeats):
+                    planned.append(PlannedPoint(len(planned), settings, previous, repeat))
+                    previous = settings
         return planned
+
+    def thinned(self, max_values: int) -> Procedure:
+        """A shorter procedure: at most ``max_values`` values per swept setting and series, one repeat."""
+        return replace(self, series=tuple(s.thinned(max_values) for s in self.series), repeats=1)
+
+
+def _fixed(table: Mapping[str, object], specs: Mapping[str, object], where: str) -> dict[str, float]:
+    T.check_keys(table, specs, where)
+    return {name: T.number(T.dotted(where, name), value, specs[name].lo, specs[name].hi, specs[name].unit)
+            for name, value in table.items()}
+
+
+def _sweep(table: Mapping[str, object], specs: Mapping[str, object], where: str):
+    T.check_keys(table, specs, where)
+    return tuple((name, T.values(T.dotted(where, name), given, specs[name].lo, specs[name].hi, specs[name].unit))
+                 for name, given in table.items())
+
+
+def _series(common: dict[str, float], fixed: dict[str, float], sweep, specs, where: str) -> Series:
+    """One series: common + own fixed settings and the sweep; every setting given exactly once."""
+    for name in fixed:
+        if name in common:
+            raise ParameterError(T.dotted(where, f"fixed.{name}"), fixed[name],
+                                 f"given once: it is also in [{WHERE}.fixed]")
+    fixed = common | fixed
+    for name, _ in sweep:
+        if name in fixed:
+            raise ParameterError(T.dotted(where, f"sweep.{name}"), dict(sweep)[name],
+                                 "either fixed or swept, not both")
+    swept = dict(sweep)
+    for name, spec in specs.items():
+        if name not in fixed and name not in swept:
+            raise ParameterError(T.dotted(where, f"fixed.{name}"), T.MISSING,
+                                 f"a number in [{spec.lo:g}, {spec.hi:g}] {spec.unit} ({spec.description}), fixed "
+                                 f"or swept; required (no default for physical input)")
+    return Series(fixed, sweep)
 
 
 def parse_procedure(table: Mapping[str, object], settings_specs: Mapping[str, object]) -> Procedure:
@@ -94,29 +176,36 @@ def parse_procedure(table: Mapping[str, object], settings_specs: Mapping[str, ob
     repeats = validate.integer(T.dotted(WHERE, "repeats"), table.get("repeats", 1), 1, MAX_POINTS)
     policy = T.member(TimeoutPolicy, table.get("on_settle_timeout", TimeoutPolicy.SKIP.value),
                       T.dotted(WHERE, "on_settle_timeout"))
-    fixed_table = T.sub_table(table, "fixed", WHERE, required=False) or {}
-    sweep_table = T.sub_table(table, "sweep", WHERE, required=False) or {}
-    fixed_where, sweep_where = T.dotted(WHERE, "fixed"), T.dotted(WHERE, "sweep")
-    T.check_keys(fixed_table, settings_specs, fixed_where)
-    T.check_keys(sweep_table, settings_specs, sweep_where)
-    fixed = {}
-    for name, value in fixed_table.items():
-        spec = settings_specs[name]
-        if name in sweep_table:
-            raise ParameterError(T.dotted(fixed_where, name), value,
-                                 f"either fixed or swept, not both (also in [{sweep_where}])")
-        fixed[name] = T.number(T.dotted(fixed_where, name), value, spec.lo, spec.hi, spec.unit)
-    sweep = tuple(
-        (name, T.values(T.dotted(sweep_where, name), given, settings_specs[name].lo, settings_specs[name].hi,
-                        settings_specs[name].unit))
-        for name, given in sweep_table.items()
-    )
-    for name, spec in settings_specs.items():
-        if name not in fixed and name not in sweep_table:
-            raise ParameterError(T.dotted(fixed_where, name), T.MISSING,
-                                 f"a number in [{spec.lo:g}, {spec.hi:g}] {spec.unit} ({spec.description}), fixed "
-                                 f"here or swept in [{sweep_where}]; required (no default for physical input)")
-    procedure = Procedure(fixed, sweep, timeout, gate, repeats, policy)
+    common = _fixed(T.sub_table(table, "fixed", WHERE, required=False) or {}, settings_specs, T.dotted(WHERE, "fixed"))
+    given = table.get("series")
+    if given is None:
+        sweep = _sweep(T.sub_table(table, "sweep", WHERE, required=False) or {}, settings_specs,
+                       T.dotted(WHERE, "sweep"))
+        series = (_series({}, common, sweep, settings_specs, WHERE),)
+    else:
+        if "sweep" in table:
+            raise ParameterError(T.dotted(WHERE, "sweep"), table["sweep"],
+                                 f"absent when [[{WHERE}.series]] is given (each series has its own sweep)")
+        if not isinstance(given, list) or not given:
+            raise ParameterError(T.dotted(WHERE, "series"), given, "a non-empty array of tables [[procedure.series]]")
+        series = []
+        for k, entry in enumerate(given):
+            where = f"{WHERE}.series[{k}]"
+            if not isinstance(entry, Mapping):
+                raise ParameterError(where, entry, "a table with 'fixed' and 'sweep'")
+            T.check_keys(entry, SERIES_KEYS, where)
+            own = _fixed(T.sub_table(entry, "fixed", where, required=False) or {}, settings_specs,
+                         T.dotted(where, "fixed"))
+            sweep = _sweep(T.sub_table(entry, "sweep", where, required=False) or {}, settings_specs,
+                           T.dotted(where, "sweep"))
+            series.append(_series(common, own, sweep, settings_specs, where))
+        names = [name for name, _ in series[0].sweep]
+        for k, entry in enumerate(series[1:], start=1):
+            if [name for name, _ in entry.sweep] != names:
+                raise ParameterError(f"{WHERE}.series[{k}].sweep", [n for n, _ in entry.sweep],
+                                     f"the settings series[0] sweeps, in the same order: {names}")
+        series = tuple(series)
+    procedure = Procedure(series, timeout, gate, repeats, policy)
     if procedure.n_points > MAX_POINTS:
         raise ParameterError("procedure: number of operating points", procedure.n_points, f"[1, {MAX_POINTS}]")
     return procedure
