@@ -32,12 +32,15 @@ def _readonly(a: np.ndarray) -> np.ndarray:
 
 @dataclass(frozen=True, eq=False)
 class DigitalReading:
-    """Digitised samples: times [s], codes [1], volts [V], clipped (bool per sample)."""
+    """Digitised samples: times [s], codes [1], volts [V], clipped (bool per sample), and the
+    converter's code width lsb_V [V] (its resolution, which a reduction needs for the step
+    bias of a mean: sensors.quantisation)."""
 
     time_s: np.ndarray
     codes: np.ndarray
     volts: np.ndarray
     clipped: np.ndarray
+    lsb_V: float
 
     @property
     def n_clipped(self) -> int:
@@ -81,6 +84,7 @@ class Adc:
             codes=_readonly(codes),
             volts=_readonly(self.code_to_volts(codes)),
             clipped=_readonly(clipped),
+            lsb_V=self.lsb_V,
         )
 
     def code_to_volts(self, codes: np.ndarray) -> np.ndarray:

@@ -10,7 +10,10 @@ uniform within +-step/2, u = step/sqrt(12) = 0.0141 N at the arm = 5.66e-3 N m. 
 the paper calls "accuracy" (0.0196 N m) is the step in moment; a conservative user can read it
 as a bound +-0.0196 N m instead (u = 0.0113 N m) - see docs/instruments.md. Readings beyond
 the full scale stick at +-full scale and are flagged (never silent). Optional noise [N at the
-arm] models reading scatter (pivot friction, pointer jitter); off by default.
+arm] models reading scatter (pivot friction, pointer jitter); off by default. Each reading
+states the step and the noise level in moment units, so that a log carries what a reduction
+needs for the uncertainty of their mean (sensors.quantisation: the step's bias does not
+average out, the scatter does).
 """
 
 from __future__ import annotations
@@ -35,10 +38,14 @@ DEFAULT_NOISE_STD_N = 0.01
 
 @dataclass(frozen=True, eq=False)
 class BalanceReading:
-    """Moment readings [N m] and a flag per reading for over-range (reading stuck at full scale)."""
+    """Moment readings [N m], a flag per reading for over-range (reading stuck at full scale),
+    the scale step in moment resolution_N_m [N m] and the reading noise noise_std_N_m [N m]
+    (0 when the noise effect is off)."""
 
     moment_N_m: np.ndarray
     over_range: np.ndarray
+    resolution_N_m: float
+    noise_std_N_m: float
 
 
 @dataclass(frozen=True, eq=False)
@@ -78,7 +85,9 @@ class TangentBalance:
         over = np.abs(force) > self.full_scale_N
         force = np.clip(force, -self.full_scale_N, self.full_scale_N)
         reading = np.rint(force / self.resolution_N) * self.resolution_N * self.arm_m
-        return BalanceReading(moment_N_m=reading, over_range=over)
+        noise_std = 0.0 if self.noise is None else self.noise.std * self.arm_m
+        return BalanceReading(moment_N_m=reading, over_range=over, resolution_N_m=self.resolution_N_m,
+                              noise_std_N_m=noise_std)
 
 
 def stand_a_balance(*, noise_rng: np.random.Generator | None = None) -> TangentBalance:

@@ -144,7 +144,10 @@ class CalibrationRecord:
     """Result of a calibration: reading = sensitivity * Q + offset, with covariance of (s, o).
 
     Units: sensitivity [reading_unit per quantity_unit], offset [reading_unit], covariance
-    [[s^2, s*o], [s*o, o^2]] in those units; residual_std is the scatter of a step mean.
+    [[s^2, s*o], [s*o, o^2]] in those units; residual_std is the scatter of a step mean;
+    reading_resolution [reading_unit] is the code width of the converter that made the
+    readings (0 = not recorded), logged with the record so that a reduction knows the step of
+    the channel it converts (sensors.quantisation).
     """
 
     quantity_name: str
@@ -155,6 +158,7 @@ class CalibrationRecord:
     covariance: tuple[tuple[float, float], tuple[float, float]]
     residual_std: float
     n_steps: int
+    reading_resolution: float = 0.0
 
     @property
     def u_sensitivity(self) -> float:
@@ -215,6 +219,7 @@ class CalibrationRecord:
             "cov_sensitivity_offset": (self.covariance[0][1], self.reading_unit + "^2/" + self.quantity_unit),
             "residual_std": (self.residual_std, self.reading_unit),
             "n_steps": (self.n_steps, "1"),
+            "reading_resolution": (self.reading_resolution, self.reading_unit),
         }
 
 
@@ -226,8 +231,10 @@ def fit_line(
     quantity_name: str,
     quantity_unit: str,
     reading_unit: str = "V",
+    reading_resolution: float = 0.0,
 ) -> CalibrationRecord:
-    """Least-squares line through (Q_nominal, step-mean reading) with the covariance model above."""
+    """Least-squares line through (Q_nominal, step-mean reading) with the covariance model above;
+    reading_resolution [reading_unit]: the converter's code width, kept in the record (0: unknown)."""
     q = validate.finite_array("quantity", quantity, min_length=3)
     y = validate.finite_array("readings", readings, min_length=3)
     if y.size != q.size:
@@ -255,6 +262,7 @@ def fit_line(
         covariance=((float(cov[0, 0]), float(cov[0, 1])), (float(cov[1, 0]), float(cov[1, 1]))),
         residual_std=float(np.sqrt(sigma2)),
         n_steps=int(q.size),
+        reading_resolution=float(validate.number("reading_resolution", reading_resolution, 0.0)),
     )
 
 
@@ -295,5 +303,5 @@ def run_calibration(
     v_q = (loading.quantity_per_weight * weights.standard_uncertainty_N) ** 2 * (a @ a.T)
     return fit_line(
         loading.quantity(load_nominal), means, v_q,
-        quantity_name=quantity_name, quantity_unit=loading.quantity_unit,
+        quantity_name=quantity_name, quantity_unit=loading.quantity_unit, reading_resolution=reading.lsb_V,
     )

@@ -45,7 +45,8 @@ class StandAGeometry:
     yoke_lever: float = _const(42.5e-3, "m", "text", "seed 000: R_v = 42.5 mm (printed 42.2: misprint)")
     balance_arm: float = _const(0.400, "m", "computed", "seed notes 3.1: 0.0196 N m / 0.049 N")
     weights_half_width: float = _const(0.098, "N", "text", "seed 000: calibration weights +-10 gf")
-    balance_half_width: float = _const(0.049, "N", "text", "seed 000: tangent balance +-5 gf")
+    balance_half_width: float = _const(0.049, "N", "text",
+                                       "seed 000: tangent balance 5 gf (its scale step, sensors.balance)")
     load_b_over_a: tuple[tuple[float, float], ...] = field(
         default=((96.2, 1.0), (385.0, 2.0)),
         metadata=dict(unit="N, 1", tag="text", source="seed 000: b/a = 1, 2 at 96.2, 385 N (pairing: seed notes 3.1)"),
@@ -66,9 +67,16 @@ class StandAGeometry:
         return _b_over_a_for_load(self.load_b_over_a, normal_force)
 
     @property
-    def balance_moment_half_width(self) -> float:
-        """Half width of the tangent balance's moment resolution [N m] (0.049 N x 0.400 m)."""
+    def balance_moment_step(self) -> float:
+        """Scale step of the tangent balance in moment [N m] (0.049 N x 0.400 m = 0.0196 N m): the
+        graduation sensors.balance rounds to; the paper calls it the "accuracy" (docs/reduction.md 4)."""
         return self.balance_half_width * self.balance_arm
+
+    @property
+    def balance_moment_half_width(self) -> float:
+        """The same 0.0196 N m read as the paper's +-bound [N m] (kept for that reading; the
+        reduction uses the step, u = step/sqrt(12), not bound/sqrt(3))."""
+        return self.balance_moment_step
 
     @property
     def lateral_force_half_width(self) -> float:

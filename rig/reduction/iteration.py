@@ -13,6 +13,7 @@ the slope s = d ln g/d ln mu is probed once: errors of the readings reach mu amp
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -37,7 +38,10 @@ class ReductionSettings:
     mu_T is NaN; min_counts: fewest counts per channel accepted (fewer: NaN, hard case 2);
     relative_step: Jacobian step in standard uncertainties (rig.reduction.uncertainty);
     identifiability_min: smallest 1 - s accepted at the fixed point, s = d ln g/d ln mu (errors
-    in the readings are amplified by 1/(1 - s); s -> 1 in the linear regime, hard case 8).
+    in the readings are amplified by 1/(1 - s); s -> 1 in the linear regime, hard case 8);
+    significance: a reading or coefficient within this many of its own standard uncertainties of
+    zero counts as zero - a friction reading that small does not drive alpha', a ratio with a
+    denominator that small is not reported (hard case 8; 2 = the ~95 % level).
     """
 
     mu_start: float = 0.3
@@ -49,6 +53,7 @@ class ReductionSettings:
     min_counts: int = 1
     relative_step: float = 1.0
     identifiability_min: float = 0.05
+    significance: float = 2.0
 
     def __post_init__(self) -> None:
         validate.number("mu_start", self.mu_start, 0.0, lo_open=True)
@@ -60,6 +65,7 @@ class ReductionSettings:
         validate.integer("min_counts", self.min_counts, 1)
         validate.number("relative_step", self.relative_step, 0.0, lo_open=True)
         validate.number("identifiability_min", self.identifiability_min, 0.0, 1.0)
+        validate.number("significance", self.significance, 0.0)
 
 
 @dataclass(frozen=True)
@@ -75,12 +81,14 @@ class FixedPoint(Generic[State]):
 Estimate = Callable[[float], tuple[float, State, str]]
 
 
-def solve_mu(estimate: Estimate, settings: ReductionSettings) -> FixedPoint:
+def solve_mu(estimate: Estimate, settings: ReductionSettings, probe: bool = True) -> FixedPoint:
     """Solve mu = g(mu); estimate(mu) returns (g(mu) or NaN, state, reason for a NaN).
 
     The iteration runs on y = ln(mu): the coefficients are close to power laws of alpha' ~ mu,
     so the map is nearly linear in y (Wegstein then converges in a few steps) and mu stays
-    positive; one step changes mu by at most a factor MAX_STEP_FACTOR.
+    positive; one step changes mu by at most a factor MAX_STEP_FACTOR. probe: check the
+    identifiability at the fixed point (once per point, at the nominal readings; the perturbed
+    evaluations of the Jacobian skip it).
     """
     y = math.log(settings.mu_start)
     y_prev = g_prev = math.nan
@@ -91,6 +99,8 @@ def solve_mu(estimate: Estimate, settings: ReductionSettings) -> FixedPoint:
             return FixedPoint(math.nan, state, k, why)
         log_g = math.log(g)
         if abs(log_g - y) <= settings.tolerance:
+            if not probe:
+                return FixedPoint(math.exp(y), state, k, "")
             return _checked(estimate, math.exp(y), log_g, state, k, settings)
         if math.isnan(y_prev):
             q = 1.0 - settings.damping
@@ -122,3 +132,24 @@ def _checked(estimate: Estimate, mu: float, log_g: float, state, k: int, setting
             f"{1.0 - settings.identifiability_min:g}; linear regime: the forces do not depend on mu, hard case 8)",
         )
     return FixedPoint(mu, state, k + 1, "")
+
+
+def solve_with_drivers(make_estimate: Callable[[str], Estimate], drivers: tuple[str, ...], mu_start: float,
+                       probe: bool, settings: ReductionSettings, no_driver: str = "") -> tuple[FixedPoint, str]:
+    """The fixed point with the first driver (friction estimate feeding alpha') that gives one.
+
+    make_estimate(driver) -> estimate(mu) as for :func:`solve_mu`; returns (fixed point, driver)
+    or, if none works, (the failure with the reasons, ""). no_driver: the reason when ``drivers``
+    is empty (rig.reduction.drivers).
+    """
+    tried = []
+    fixed = FixedPoint(math.nan, None, 0, no_driver or "no friction estimate may drive alpha'")
+    start = dataclasses.replace(settings, mu_start=mu_start)
+    for driver in drivers:
+        fixed = solve_mu(make_estimate(driver), start, probe)
+        if not fixed.reason:
+            return fixed, driver
+        tried.append(f"{driver}: {fixed.reason}")
+    if tried:
+        fixed = dataclasses.replace(fixed, reason="; ".join(tried) if len(tried) > 1 else fixed.reason)
+    return fixed, ""

@@ -1,9 +1,17 @@
-"""The reduced operating point and the step shared by both stands: evaluate, propagate, budget.
+"""The reduced operating point and the step shared by both stands: evaluate, propagate, guard, budget.
 
-A stand's chain is a function ``evaluate(values, mu_start) -> Evaluation`` of the flat input
-values (names as in the InputSet); :func:`reduce_point` evaluates it at the readings, propagates
-the uncertainties (restarting the mu <-> alpha' iteration from the nominal mu, so that the
-perturbed evaluations converge in a few steps) and splits the variances into a budget.
+A stand's chain is a function ``evaluate(values, start) -> Evaluation`` of the flat input values
+(names as in the InputSet). :func:`reduce_point`
+1. evaluates it at the readings with ``Start(mu_start, drivers)``: the chain picks, once, the
+   first friction estimate in ``drivers`` that gives a fixed point (which mu drives alpha');
+2. propagates the uncertainties (rig.reduction.uncertainty.first_order) with every perturbed
+   evaluation restarted from the nominal mu *and kept on the nominal driver* - a perturbation
+   must not switch the chain to another estimate (hard case 8);
+3. applies the significance guard: a ratio mu = numerator/denominator whose denominator (nu_v,
+   nu_T, nu_0, D) lies within ``significance`` of its own standard uncertainty of zero is not
+   reported (its first-order uncertainty would be meaningless); if it drove alpha', everything
+   computed from that mu goes with it;
+4. splits the variances into a budget and computes the 95 % half widths U95 (rig.reduction.coverage).
 """
 
 from __future__ import annotations
@@ -15,41 +23,63 @@ from dataclasses import dataclass
 import numpy as np
 
 from rig.reduction.budget import UncertaintyBudget, budget
+from rig.reduction.coverage import expanded_uncertainty
 from rig.reduction.uncertainty import InputSet, Propagation, first_order
 
 
 @dataclass(frozen=True)
+class Start:
+    """Where a chain evaluation starts: mu [1] for the mu <-> alpha' iteration, the friction
+    estimates allowed to drive alpha' in order of preference (the first that works is used),
+    whether to probe the identifiability at the fixed point (nominal evaluation only), and why
+    no estimate may drive alpha' when ``drivers`` is empty."""
+
+    mu: float
+    drivers: tuple[str, ...]
+    probe: bool = True
+    no_driver: str = ""
+
+
+@dataclass(frozen=True)
 class Evaluation:
-    """One pass of a chain: output values (NaN where undefined), reasons for the NaNs, mu used in alpha'."""
+    """One pass of a chain: output values (NaN where undefined), reasons for the NaNs, the mu used
+    in alpha' [1], iterations, and the estimate that drove alpha' ("" if none)."""
 
     values: dict[str, float]
     reasons: dict[str, str]
     mu: float
     iterations: int
+    driver: str = ""
 
 
 @dataclass(frozen=True)
 class ReducedPoint:
     """A reduced operating point.
 
-    values/uncertainties: output name -> value / standard uncertainty (units in the names, e.g.
-    ``l_m``; names without a unit are dimensionless); reasons: output name -> why it is NaN;
-    iterations of the mu <-> alpha' loop; propagation and budget of the first-order model.
+    values/uncertainties/expanded: output name -> value / standard uncertainty / half width U95
+    of the 95 % interval (units in the names, e.g. ``l_m``; names without a unit are
+    dimensionless); reasons: output name -> why it is NaN; iterations of the mu <-> alpha' loop;
+    driver: the friction estimate that fed alpha'; propagation and budget of the first-order model.
     """
 
     values: Mapping[str, float]
     uncertainties: Mapping[str, float]
+    expanded: Mapping[str, float]
     reasons: Mapping[str, str]
     iterations: int
+    driver: str
     propagation: Propagation
     budget: UncertaintyBudget
 
     def row(self) -> dict[str, float | str]:
-        """Flat row: each output followed by ``u_<output>``, and a ``reason`` column."""
+        """Flat row: each output followed by ``u_<output>``, then ``U95_<output>`` for every
+        output, and a ``reason`` column."""
         row: dict[str, float | str] = {}
         for name, value in self.values.items():
             row[name] = value
             row[f"u_{name}"] = self.uncertainties[name]
+        for name in self.values:
+            row[f"U95_{name}"] = self.expanded[name]
         grouped: dict[str, list[str]] = {}
         for name, reason in self.reasons.items():
             grouped.setdefault(reason, []).append(name)
@@ -57,27 +87,52 @@ class ReducedPoint:
         return row
 
 
-Evaluate = Callable[[Mapping[str, float], float], Evaluation]
+Evaluate = Callable[[Mapping[str, float], Start], Evaluation]
 
 
-def reduce_point(evaluate: Evaluate, inputs: InputSet, mu_start: float, relative_step: float) -> ReducedPoint:
-    """Evaluate a chain at its inputs, propagate to first order, and build the budget."""
-    nominal = evaluate(inputs.mapping(inputs.values), mu_start)
-    restart = nominal.mu if math.isfinite(nominal.mu) else mu_start
+@dataclass(frozen=True)
+class Guard:
+    """The significance guard of one ratio output (e.g. mu_v) and its denominator output (nu_v)."""
+
+    ratio: str
+    denominator: str
+
+
+def reduce_point(evaluate: Evaluate, inputs: InputSet, start: Start, relative_step: float,
+                 guards: tuple[Guard, ...], significance: float, driven: tuple[str, ...]) -> ReducedPoint:
+    """Evaluate a chain at its inputs, propagate to first order, guard, budget, U95.
+
+    guards: the ratio outputs and their denominators; significance: the guard's factor [1];
+    driven: the outputs computed from the driving mu (alpha', nu's, every mu).
+    """
+    nominal = evaluate(inputs.mapping(inputs.values), start)
+    restart = Start(nominal.mu if math.isfinite(nominal.mu) else start.mu,
+                    (nominal.driver,) if nominal.driver else start.drivers, False, start.no_driver)
     names = tuple(nominal.values)
     propagation = first_order(lambda x: evaluate(x, restart).values, inputs, names, relative_step)
-    u = propagation.uncertainties
-    uncertainties = {
-        name: float(u[i]) if math.isfinite(nominal.values[name]) else math.nan for i, name in enumerate(names)
-    }
+    values, reasons = dict(nominal.values), dict(nominal.reasons)
+    u_all = propagation.uncertainties
+    u = {name: float(u_all[i]) if math.isfinite(values[name]) else math.nan for i, name in enumerate(names)}
+    for guard in guards:
+        den, u_den = values[guard.denominator], u[guard.denominator]
+        if math.isfinite(values[guard.ratio]) and not abs(den) > significance * u_den:
+            why = (f"|{guard.denominator}| = {abs(den):.3g} is within {significance:g} u = {significance * u_den:.3g} "
+                   "of 0: the ratio's denominator is not known to be non-zero (hard case 8)")
+            lost = driven if guard.ratio == nominal.driver else (guard.ratio,)
+            for name in lost:
+                values[name], u[name] = math.nan, math.nan
+                reasons.setdefault(name, why if name == guard.ratio else f"{guard.ratio} drives alpha': {why}")
     propagation = Propagation(
-        inputs, names, np.array([nominal.values[n] for n in names]), propagation.jacobian, propagation.covariance
+        inputs, names, np.array([values[n] for n in names]), propagation.jacobian, propagation.covariance
     )
+    expanded = expanded_uncertainty(propagation)
     return ReducedPoint(
-        values=dict(nominal.values),
-        uncertainties=uncertainties,
-        reasons=dict(nominal.reasons),
+        values=values,
+        uncertainties=u,
+        expanded={name: float(expanded[i]) if math.isfinite(u[name]) else math.nan for i, name in enumerate(names)},
+        reasons=reasons,
         iterations=nominal.iterations,
+        driver=nominal.driver,
         propagation=propagation,
         budget=budget(propagation),
     )

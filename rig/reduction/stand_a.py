@@ -6,37 +6,49 @@ Per operating point (seed notes 2, "Implementation of the chain"):
     v/w0 = r1/(sin alpha1 + i_k); alpha' = 10 mu (b/a)(v/w0)/R_x       eq. (21), line contact
     F_y = [(s - s0)/S + e_w] (102 mm/R_v)                              dynamometer 10, eq. (33)
     (nu_T, nu_v, nu_0) = coefficients(l/a, c/a, alpha')               contact model (any)
+    D = -(l - l2) nu_T - a nu_0                                        lever of eq. (35)
     mu_v = F_y/(F_N nu_v), mu_T = [T2 + F_y(Delta h - c)]/(F_N D)      eqs. (33), (35)
-iterated over mu in alpha' (rig.reduction.iteration; mu_v is used, mu_T when mu_v is not
-reportable). Guards (hard cases 2, 8): fewer than min_counts counts or a vanishing spin -> all
-outputs NaN with the reason; |nu_v| < nu_min -> mu_v NaN; |D|/a < denominator_min -> mu_T NaN.
-Configuration errors (marks, gate time, b/a, geometry) raise ParameterError instead.
+iterated over mu in alpha' (rig.reduction.iteration) with the driver chosen once per point
+(rig.reduction.drivers: mu_v, else mu_T, each only if its reading is significant).
+Input uncertainties: counts from the counters' quantisation (sensors.COUNT_QUANTISATION_STD,
+triangular), the rest as the readings state them (rig.reduction.readings.Measured, with the
+balance's scale-step part). Guards (hard cases 2, 8): fewer than min_counts counts or a
+vanishing spin -> all outputs NaN with the reason; |nu_v| < nu_min, |D|/a < denominator_min ->
+that mu NaN; a denominator within ``significance`` u of zero -> that mu NaN (rig.reduction.result);
+the contact model's own reason when it has no coefficients. Configuration errors (marks, gate
+time, b/a, geometry) raise ParameterError instead.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 from rig import validate
 from rig.errors import ParameterError
 from rig.reduction import equations as eq
+from rig.reduction.coefficients import Coefficients, call_model
+from rig.reduction.drivers import significant_drivers
 from rig.reduction.geometry import StandAGeometry
-from rig.reduction.iteration import ReductionSettings, solve_mu
-from rig.reduction.readings import ForceCalibration, Measured
-from rig.reduction.result import Evaluation, ReducedPoint, reduce_point
-from rig.reduction.uncertainty import Covariance, Distribution, InputQuantity, InputSet, rectangular_u
+from rig.reduction.iteration import ReductionSettings, solve_with_drivers
+from rig.reduction.readings import ForceCalibration, Measured, reading_inputs, reading_value
+from rig.reduction.result import Evaluation, Guard, ReducedPoint, Start, reduce_point
+from rig.reduction.uncertainty import Covariance, Distribution, InputQuantity, InputSet
 from rig.wheel_kinematics import SpinTooSmallError
-
-Coefficients = Callable[[float, float, float], tuple[float, float, float]]
+from sensors import COUNT_QUANTISATION_STD
 
 OUTPUTS = (
     "i_k", "omega_1_rad_s", "spin_rad_s", "l_m", "c_m", "l_over_a", "c_over_a", "F_y_N",
-    "alpha_prime", "nu_T", "nu_v", "nu_0", "mu_v", "mu_T",
+    "alpha_prime", "nu_T", "nu_v", "nu_0", "D_m", "mu_v", "mu_T",
 )
-COUNT_HALF_WIDTH = 1.0  # +-1 count quantisation of a gated counter [count], rectangular
+DRIVERS = ("mu_v", "mu_T")  # which estimate feeds alpha', in order of preference (seed notes 2)
+DRIVEN = ("alpha_prime", "nu_T", "nu_v", "nu_0", "D_m", "mu_v", "mu_T")  # computed from the driving mu
+GUARDS = (Guard("mu_v", "nu_v"), Guard("mu_T", "D_m"))
+COUNT_U = float(COUNT_QUANTISATION_STD)
+"""u of a gated count [count]: 1/sqrt(6), the difference of two uniform mark phases at the gate
+edges (triangular on (-1, 1); sensors.counters) - the instrument's own model, by import."""
 GEOMETRY_INPUTS = ("l1", "l2", "alpha_1", "delta_h", "a", "r1", "radius_x", "dynamometer_lever", "yoke_lever")
 
 
@@ -46,8 +58,9 @@ class StandAReadings:
 
     counts_k: counter totals [1] of z_k marks (marks_k) in one common gate; gate_time [s];
     normal_force F_N [N]; dynamometer_signal [V] with its calibration; brake_moment T2 [N m]
-    from the tangent balance (positive when it resists wheel 2); b_over_a [1] of the contact at
-    this load (the same value the caller binds into the coefficients).
+    from the tangent balance (positive when it resists wheel 2; its u_step is the scale step's
+    bias); b_over_a [1] of the contact at this load (the same value the caller binds into the
+    coefficients).
     """
 
     counts_1: int
@@ -82,18 +95,17 @@ def input_set(
     geometry_u = dict(geometry_u or {})
     validate.known_keys("geometry constant", geometry_u, GEOMETRY_INPUTS)
     r, cal = readings, readings.dynamometer
-    u_count = rectangular_u(COUNT_HALF_WIDTH)
-    rect = Distribution.RECTANGULAR
+    tri = Distribution.TRIANGULAR
     quantities = [
-        InputQuantity("N1", float(r.counts_1), u_count, "1", "counter 1 (wheel 1)", rect),
-        InputQuantity("N2", float(r.counts_2), u_count, "1", "counter 2 (wheel 2)", rect),
-        InputQuantity("T_gate_s", r.gate_time.value, r.gate_time.u, "s", "timer"),
-        InputQuantity("F_N_N", r.normal_force.value, r.normal_force.u, "N", "pressing force"),
-        InputQuantity("dyn_signal_V", r.dynamometer_signal.value, r.dynamometer_signal.u, "V", "dynamometer signal"),
+        InputQuantity("N1", float(r.counts_1), COUNT_U, "1", "counter 1 (wheel 1)", tri),
+        InputQuantity("N2", float(r.counts_2), COUNT_U, "1", "counter 2 (wheel 2)", tri),
+        *reading_inputs("T_gate", "s", "s", r.gate_time, "timer"),
+        *reading_inputs("F_N", "N", "N", r.normal_force, "pressing force"),
+        *reading_inputs("dyn_signal", "V", "V", r.dynamometer_signal, "dynamometer signal"),
         InputQuantity("dyn_sensitivity_V_per_N", cal.sensitivity, cal.u_sensitivity, "V/N", "dynamometer calibration"),
         InputQuantity("dyn_offset_V", cal.offset, cal.u_offset, "V", "dynamometer calibration"),
         InputQuantity("dyn_weights_N", 0.0, cal.u_weights, "N", "calibration weights"),
-        InputQuantity("T2_N_m", r.brake_moment.value, r.brake_moment.u, "N m", "tangent balance"),
+        *reading_inputs("T2", "N_m", "N m", r.brake_moment, "tangent balance"),
     ]
     units = {f.name: f.metadata["unit"] for f in dataclasses.fields(geometry)}
     for name, u in geometry_u.items():
@@ -104,9 +116,35 @@ def input_set(
     return InputSet(tuple(quantities), covariances)
 
 
+def _geometry(geometry: StandAGeometry, values: Mapping[str, float]) -> StandAGeometry:
+    changed = {k[5:]: v for k, v in values.items() if k.startswith("geom_")}
+    return dataclasses.replace(geometry, **changed) if changed else geometry
+
+
+def _lateral_force(values: Mapping[str, float], g: StandAGeometry) -> float:
+    """F_y [N] from the dynamometer signal and its calibration (eq. 33 lever)."""
+    force_dyn = eq.force_from_signal(
+        reading_value(values, "dyn_signal", "V"), values["dyn_sensitivity_V_per_N"], values["dyn_offset_V"]
+    ) + values["dyn_weights_N"]
+    return eq.lateral_force_from_dynamometer(force_dyn, g.dynamometer_lever, g.yoke_lever)
+
+
+def _moment_numerator(values: Mapping[str, float], readings: StandAReadings, g: StandAGeometry) -> float:
+    """T2 + F_y (Delta h - c) [N m], the numerator of eq. (35) (NaN without a rolling point)."""
+    n1, n2 = values["N1"], values["N2"]
+    if min(n1, n2) <= 0.0:
+        return math.nan
+    try:
+        c, _ = eq.stand_a_rolling_point(eq.ratio_from_counts(n1, n2, readings.marks_1, readings.marks_2),
+                                        g.alpha_1, g.l1, g.l2, g.delta_h)
+    except SpinTooSmallError:
+        return math.nan
+    return reading_value(values, "T2", "N_m") + _lateral_force(values, g) * (g.delta_h - c)
+
+
 def evaluate(
     values: Mapping[str, float],
-    mu_start: float,
+    start: Start,
     *,
     readings: StandAReadings,
     geometry: StandAGeometry,
@@ -114,43 +152,43 @@ def evaluate(
     settings: ReductionSettings,
 ) -> Evaluation:
     """The chain at one set of input values (names as in :func:`input_set`)."""
-    g = dataclasses.replace(
-        geometry, **{k[5:]: v for k, v in values.items() if k.startswith("geom_")}
-    )
+    g = _geometry(geometry, values)
     out = dict.fromkeys(OUTPUTS, math.nan)
-    force_dyn = eq.force_from_signal(
-        values["dyn_signal_V"], values["dyn_sensitivity_V_per_N"], values["dyn_offset_V"]
-    ) + values["dyn_weights_N"]
-    out["F_y_N"] = f_y = eq.lateral_force_from_dynamometer(force_dyn, g.dynamometer_lever, g.yoke_lever)
+    out["F_y_N"] = f_y = _lateral_force(values, g)
     kinematic = tuple(name for name in OUTPUTS if name != "F_y_N")
     n1, n2 = values["N1"], values["N2"]
     if min(n1, n2) < settings.min_counts:
         why = f"counts N1 = {n1:g}, N2 = {n2:g} below min_counts = {settings.min_counts} (stall, hard case 2)"
         return Evaluation(out, dict.fromkeys(kinematic, why), math.nan, 0)
     i_k = eq.ratio_from_counts(n1, n2, readings.marks_1, readings.marks_2)
-    omega_1 = eq.angular_speed_from_counts(n1, readings.marks_1, values["T_gate_s"])
+    omega_1 = eq.angular_speed_from_counts(n1, readings.marks_1, reading_value(values, "T_gate", "s"))
     try:
         c, l = eq.stand_a_rolling_point(i_k, g.alpha_1, g.l1, g.l2, g.delta_h)
     except SpinTooSmallError as error:
         return Evaluation(out, dict.fromkeys(kinematic, str(error)), math.nan, 0)
     sin_a1 = math.sin(g.alpha_1)
-    f_n, t2 = values["F_N_N"], values["T2_N_m"]
+    f_n, t2 = reading_value(values, "F_N", "N"), reading_value(values, "T2", "N_m")
     alpha_per_mu = eq.alpha_prime_line_contact(1.0, readings.b_over_a, g.r1 / (sin_a1 + i_k), g.radius_x)
     out.update(
         i_k=i_k, omega_1_rad_s=omega_1, spin_rad_s=omega_1 * (sin_a1 + i_k), l_m=l, c_m=c,
         l_over_a=l / g.a, c_over_a=c / g.a,
     )
 
-    def estimate(mu: float) -> tuple[float, dict[str, float], str]:
+    def state_at(mu: float) -> tuple[dict[str, float], dict[str, str]]:
         alpha = alpha_per_mu * mu
-        nu_t, nu_v, nu_0 = coefficients(l / g.a, c / g.a, alpha)
-        state = dict(alpha_prime=alpha, nu_T=nu_t, nu_v=nu_v, nu_0=nu_0, mu_v=math.nan, mu_T=math.nan)
+        state = dict.fromkeys(DRIVEN, math.nan)
+        state["alpha_prime"] = alpha
+        nu, why = call_model(coefficients, l / g.a, c / g.a, alpha)
+        if nu is None:
+            return state, dict.fromkeys(DRIVEN[1:], why)
+        nu_t, nu_v, nu_0 = nu
+        denominator = eq.mu_t_denominator(nu_t, nu_0, l, g.l2, g.a)
+        state.update(nu_T=nu_t, nu_v=nu_v, nu_0=nu_0, D_m=denominator)
         reasons = {}
         if abs(nu_v) >= settings.nu_min:
             state["mu_v"] = eq.mu_v(f_y, f_n, nu_v)
         else:
             reasons["mu_v"] = f"|nu_v| = {abs(nu_v):.3g} < nu_min = {settings.nu_min:g} (c ~ 0, hard case 8)"
-        denominator = eq.mu_t_denominator(nu_t, nu_0, l, g.l2, g.a)
         if abs(denominator) >= settings.denominator_min * g.a:
             state["mu_T"] = eq.mu_t(t2, f_n, f_y, nu_t, nu_0, l, c, g.l2, g.delta_h, g.a)
         else:
@@ -158,20 +196,23 @@ def evaluate(
                 f"|D|/a = {abs(denominator) / g.a:.3g} < denominator_min = {settings.denominator_min:g} "
                 "in eq. (35) (hard case 8)"
             )
-        state["reasons"] = reasons
-        for name in ("mu_v", "mu_T"):
-            if math.isfinite(state[name]) and state[name] > 0.0:
-                return state[name], state, ""
-        return math.nan, state, "; ".join(reasons.values()) or "no positive friction estimate"
+        return state, reasons
 
-    fixed = solve_mu(estimate, dataclasses.replace(settings, mu_start=mu_start))
-    reasons = dict(fixed.state.pop("reasons")) if fixed.state else {}
+    def make_estimate(driver: str):
+        def estimate(mu: float):
+            state, reasons = state_at(mu)
+            value = state[driver]
+            if math.isfinite(value) and value > 0.0:
+                return value, (state, reasons), ""
+            return math.nan, (state, reasons), reasons.get(driver) or f"{driver} = {value:.6g} is not positive"
+        return estimate
+
+    fixed, driver = solve_with_drivers(make_estimate, start.drivers, start.mu, start.probe, settings, start.no_driver)
     if fixed.reason:
-        for name in ("alpha_prime", "nu_T", "nu_v", "nu_0", "mu_v", "mu_T"):
-            reasons.setdefault(name, fixed.reason)
-    else:
-        out.update(fixed.state)
-    return Evaluation(out, reasons, fixed.mu, fixed.iterations)
+        return Evaluation(out, dict.fromkeys(DRIVEN, fixed.reason), math.nan, fixed.iterations)
+    state, reasons = fixed.state
+    out.update(state)
+    return Evaluation(out, dict(reasons), fixed.mu, fixed.iterations, driver)
 
 
 def reduce(
@@ -181,11 +222,12 @@ def reduce(
     settings: ReductionSettings | None = None,
     geometry_u: Mapping[str, float] | None = None,
 ) -> ReducedPoint:
-    """Reduce one stand-A operating point (values, standard uncertainties, budget, reasons).
+    """Reduce one stand-A operating point (values, standard uncertainties, U95, budget, reasons).
 
     coefficients(l/a, c/a, alpha') -> (nu_T, nu_v, nu_0) with b/a, shape and model bound by
-    the caller (e.g. functools.partial over rig.contact.solve.solve); geometry defaults to the
-    seed-notes stand A (rig.reduction.geometry); settings to ReductionSettings().
+    the caller (e.g. functools.partial over rig.contact.solve.solve); it may raise
+    rig.reduction.coefficients.OutsideModelDomain. geometry defaults to the seed-notes stand A
+    (rig.reduction.geometry); settings to ReductionSettings().
     """
     if not callable(coefficients):
         raise ParameterError(
@@ -194,10 +236,16 @@ def reduce(
     geometry = StandAGeometry() if geometry is None else geometry
     settings = ReductionSettings() if settings is None else settings
     inputs = input_set(readings, geometry, geometry_u)
+    numerators = {
+        "mu_v": ("F_y", lambda v: _lateral_force(v, _geometry(geometry, v))),
+        "mu_T": ("T2 + F_y (Delta h - c)", lambda v: _moment_numerator(v, readings, _geometry(geometry, v))),
+    }
+    drivers, no_driver = significant_drivers(inputs, numerators, settings.significance)
 
-    def chain(values: Mapping[str, float], mu_start: float) -> Evaluation:
+    def chain(values: Mapping[str, float], start: Start) -> Evaluation:
         return evaluate(
-            values, mu_start, readings=readings, geometry=geometry, coefficients=coefficients, settings=settings
+            values, start, readings=readings, geometry=geometry, coefficients=coefficients, settings=settings
         )
 
-    return reduce_point(chain, inputs, settings.mu_start, settings.relative_step)
+    start = Start(settings.mu_start, drivers, True, no_driver)
+    return reduce_point(chain, inputs, start, settings.relative_step, GUARDS, settings.significance, DRIVEN)

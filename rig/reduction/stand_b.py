@@ -6,35 +6,42 @@ Per operating point (seed notes 3.2):
     M_C = T_Mo + R_c F_T (momentometer 8 + dynamometer 5)                 small difference of large terms
     (nu_T, nu_v, nu_0) = coefficients(l/a, c/a, alpha')
     mu_v = F_V/(F_N nu_v) (33), mu_T = F_T/(F_N nu_T) (27), mu_M = |M_C|/(a F_N nu_0) (26)
-iterated over mu in alpha' (mu_v first, then mu_T, then mu_M: the first one reportable).
+iterated over mu in alpha' with the driver chosen once per point at the nominal readings
+(rig.reduction.drivers: mu_v, then mu_T, then mu_M - the first whose reading F_V, F_T, M_C is
+significant and which gives a fixed point) and kept while the Jacobian is evaluated: at c = 0
+F_V is noise, and a perturbed twist sigma must not let it drive alpha' (hard case 8).
 Forces are the calibrated dynamometer outputs [N] in the contact convention of rig.contact
-(F_T = F_x, F_V = F_y on the disc, spin w0 > 0); a sensors adapter maps the instruments to it.
-Guards: |nu_v| (|nu_T|, nu_0) < nu_min -> that mu is NaN with the reason (hard case 8).
+(F_T = F_x, F_V = F_y on the disc, spin w0 > 0); rig.stands.disc_roller.reduction maps the
+instruments to it. Guards: |nu| < nu_min, or a nu within ``significance`` u of zero, -> that mu
+is NaN with the reason (hard case 8).
 """
 
 from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 from rig import validate
 from rig.errors import ParameterError
 from rig.reduction import equations as eq
+from rig.reduction.coefficients import Coefficients, call_model
+from rig.reduction.drivers import significant_drivers
 from rig.reduction.geometry import StandBGeometry
-from rig.reduction.iteration import ReductionSettings, solve_mu
-from rig.reduction.readings import Measured
-from rig.reduction.result import Evaluation, ReducedPoint, reduce_point
+from rig.reduction.iteration import ReductionSettings, solve_with_drivers
+from rig.reduction.readings import Measured, reading_inputs, reading_value
+from rig.reduction.result import Evaluation, Guard, ReducedPoint, Start, reduce_point
 from rig.reduction.uncertainty import InputQuantity, InputSet
-
-Coefficients = Callable[[float, float, float], tuple[float, float, float]]
 
 OUTPUTS = (
     "l_m", "c_m", "l_over_a", "c_over_a", "M_C_N_m", "alpha_prime", "nu_T", "nu_v", "nu_0", "mu_v", "mu_T", "mu_M",
 )
 GEOMETRY_INPUTS = ("radius_c", "roller_radius", "pivot_distance", "a")
-MU_ORDER = ("mu_v", "mu_T", "mu_M")  # which estimate feeds alpha'
+MU_ORDER = ("mu_v", "mu_T", "mu_M")  # which estimate feeds alpha', in order of preference
+DRIVEN = ("alpha_prime", "nu_T", "nu_v", "nu_0", "mu_v", "mu_T", "mu_M")
+GUARDS = (Guard("mu_v", "nu_v"), Guard("mu_T", "nu_T"), Guard("mu_M", "nu_0"))
+COEFFICIENT_OF = {"mu_v": "nu_v", "mu_T": "nu_T", "mu_M": "nu_0"}
 
 
 @dataclass(frozen=True)
@@ -69,12 +76,12 @@ def input_set(
     validate.known_keys("geometry constant", geometry_u, GEOMETRY_INPUTS)
     r = readings
     quantities = [
-        InputQuantity("l_setting_m", r.l_setting.value, r.l_setting.u, "m", "roller position scale"),
-        InputQuantity("sigma_rad", r.twist.value, r.twist.u, "rad", "twist scale"),
-        InputQuantity("F_N_N", r.normal_force.value, r.normal_force.u, "N", "dead weights"),
-        InputQuantity("F_T_N", r.peripheral_force.value, r.peripheral_force.u, "N", "dynamometer F_T"),
-        InputQuantity("F_V_N", r.lateral_force.value, r.lateral_force.u, "N", "dynamometer F_V"),
-        InputQuantity("T_Mo_N_m", r.momentometer_torque.value, r.momentometer_torque.u, "N m", "momentometer"),
+        *reading_inputs("l_setting", "m", "m", r.l_setting, "roller position scale"),
+        *reading_inputs("sigma", "rad", "rad", r.twist, "twist scale"),
+        *reading_inputs("F_N", "N", "N", r.normal_force, "dead weights"),
+        *reading_inputs("F_T", "N", "N", r.peripheral_force, "dynamometer F_T"),
+        *reading_inputs("F_V", "N", "N", r.lateral_force, "dynamometer F_V"),
+        *reading_inputs("T_Mo", "N_m", "N m", r.momentometer_torque, "momentometer"),
     ]
     units = {f.name: f.metadata["unit"] for f in dataclasses.fields(geometry)}
     for name, u in geometry_u.items():
@@ -82,9 +89,20 @@ def input_set(
     return InputSet(tuple(quantities))
 
 
+def _geometry(geometry: StandBGeometry, values: Mapping[str, float]) -> StandBGeometry:
+    changed = {k[5:]: v for k, v in values.items() if k.startswith("geom_")}
+    return dataclasses.replace(geometry, **changed) if changed else geometry
+
+
+def _pivoting_moment(values: Mapping[str, float], g: StandBGeometry) -> float:
+    """M_C = T_Mo + R_c F_T [N m] (seed notes 3.2)."""
+    return eq.pivoting_moment_stand_b(reading_value(values, "T_Mo", "N_m"), reading_value(values, "F_T", "N"),
+                                      g.radius_c)
+
+
 def evaluate(
     values: Mapping[str, float],
-    mu_start: float,
+    start: Start,
     *,
     readings: StandBReadings,
     geometry: StandBGeometry,
@@ -92,46 +110,54 @@ def evaluate(
     settings: ReductionSettings,
 ) -> Evaluation:
     """The chain at one set of input values (names as in :func:`input_set`)."""
-    g = dataclasses.replace(geometry, **{k[5:]: v for k, v in values.items() if k.startswith("geom_")})
+    g = _geometry(geometry, values)
     out = dict.fromkeys(OUTPUTS, math.nan)
-    l = values["l_setting_m"]
-    c = eq.stand_b_offset(g.pivot_distance, values["sigma_rad"])
-    f_n, f_t, f_v = values["F_N_N"], values["F_T_N"], values["F_V_N"]
-    moment_c = eq.pivoting_moment_stand_b(values["T_Mo_N_m"], f_t, g.radius_c)
+    l = reading_value(values, "l_setting", "m")
+    c = eq.stand_b_offset(g.pivot_distance, reading_value(values, "sigma", "rad"))
+    f_n = reading_value(values, "F_N", "N")
+    f_t, f_v = reading_value(values, "F_T", "N"), reading_value(values, "F_V", "N")
+    moment_c = _pivoting_moment(values, g)
     alpha_per_mu = eq.alpha_prime_line_contact(1.0, readings.b_over_a, g.spin_radius, g.radius_x)
     out.update(l_m=l, c_m=c, l_over_a=l / g.a, c_over_a=c / g.a, M_C_N_m=moment_c)
-    guards = (
-        ("mu_v", "nu_v", lambda nu: eq.mu_from_force(f_v, f_n, nu)),
-        ("mu_T", "nu_T", lambda nu: eq.mu_from_force(f_t, f_n, nu)),
-        ("mu_M", "nu_0", lambda nu: eq.mu_from_pivoting_moment(moment_c, f_n, g.a, nu)),
-    )
+    formulas = {
+        "mu_v": lambda nu: eq.mu_from_force(f_v, f_n, nu),
+        "mu_T": lambda nu: eq.mu_from_force(f_t, f_n, nu),
+        "mu_M": lambda nu: eq.mu_from_pivoting_moment(moment_c, f_n, g.a, nu),
+    }
 
-    def estimate(mu: float) -> tuple[float, dict[str, float], str]:
+    def state_at(mu: float) -> tuple[dict[str, float], dict[str, str]]:
         alpha = alpha_per_mu * mu
-        nu_t, nu_v, nu_0 = coefficients(l / g.a, c / g.a, alpha)
-        state = dict(alpha_prime=alpha, nu_T=nu_t, nu_v=nu_v, nu_0=nu_0)
+        state = dict.fromkeys(DRIVEN, math.nan)
+        state["alpha_prime"] = alpha
+        nu, why = call_model(coefficients, l / g.a, c / g.a, alpha)
+        if nu is None:
+            return state, dict.fromkeys(DRIVEN[1:], why)
+        state.update(nu_T=nu[0], nu_v=nu[1], nu_0=nu[2])
         reasons = {}
-        for name, nu_name, formula in guards:
-            nu = state[nu_name]
-            if abs(nu) >= settings.nu_min:
-                state[name] = formula(nu)
+        for name, formula in formulas.items():
+            coefficient = COEFFICIENT_OF[name]
+            if abs(state[coefficient]) >= settings.nu_min:
+                state[name] = formula(state[coefficient])
             else:
-                state[name] = math.nan
-                reasons[name] = f"|{nu_name}| = {abs(nu):.3g} < nu_min = {settings.nu_min:g} (hard case 8)"
-        state["reasons"] = reasons
-        for name in MU_ORDER:
-            if math.isfinite(state[name]) and state[name] > 0.0:
-                return state[name], state, ""
-        return math.nan, state, "; ".join(reasons.values()) or "no positive friction estimate"
+                reasons[name] = (f"|{coefficient}| = {abs(state[coefficient]):.3g} < nu_min = {settings.nu_min:g} "
+                                 "(hard case 8)")
+        return state, reasons
 
-    fixed = solve_mu(estimate, dataclasses.replace(settings, mu_start=mu_start))
-    reasons = dict(fixed.state.pop("reasons")) if fixed.state else {}
+    def make_estimate(driver: str):
+        def estimate(mu: float):
+            state, reasons = state_at(mu)
+            value = state[driver]
+            if math.isfinite(value) and value > 0.0:
+                return value, (state, reasons), ""
+            return math.nan, (state, reasons), reasons.get(driver) or f"{driver} = {value:.6g} is not positive"
+        return estimate
+
+    fixed, driver = solve_with_drivers(make_estimate, start.drivers, start.mu, start.probe, settings, start.no_driver)
     if fixed.reason:
-        for name in ("alpha_prime", "nu_T", "nu_v", "nu_0", *MU_ORDER):
-            reasons.setdefault(name, fixed.reason)
-    else:
-        out.update(fixed.state)
-    return Evaluation(out, reasons, fixed.mu, fixed.iterations)
+        return Evaluation(out, dict.fromkeys(DRIVEN, fixed.reason), math.nan, fixed.iterations)
+    state, reasons = fixed.state
+    out.update(state)
+    return Evaluation(out, dict(reasons), fixed.mu, fixed.iterations, driver)
 
 
 def reduce(
@@ -149,10 +175,17 @@ def reduce(
     geometry = StandBGeometry() if geometry is None else geometry
     settings = ReductionSettings() if settings is None else settings
     inputs = input_set(readings, geometry, geometry_u)
+    numerators = {
+        "mu_v": ("F_V", lambda v: reading_value(v, "F_V", "N")),
+        "mu_T": ("F_T", lambda v: reading_value(v, "F_T", "N")),
+        "mu_M": ("M_C", lambda v: _pivoting_moment(v, _geometry(geometry, v))),
+    }
+    drivers, no_driver = significant_drivers(inputs, numerators, settings.significance)
 
-    def chain(values: Mapping[str, float], mu_start: float) -> Evaluation:
+    def chain(values: Mapping[str, float], start: Start) -> Evaluation:
         return evaluate(
-            values, mu_start, readings=readings, geometry=geometry, coefficients=coefficients, settings=settings
+            values, start, readings=readings, geometry=geometry, coefficients=coefficients, settings=settings
         )
 
-    return reduce_point(chain, inputs, settings.mu_start, settings.relative_step)
+    start = Start(settings.mu_start, drivers, True, no_driver)
+    return reduce_point(chain, inputs, start, settings.relative_step, GUARDS, settings.significance, DRIVEN)

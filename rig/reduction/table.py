@@ -2,7 +2,9 @@
 
 Column order starts with the columns the issue asks for (``l_over_a, u_l_over_a, c_over_a,
 u_c_over_a, mu_v, u_mu_v, mu_T, u_mu_T``), then the other outputs of the chain (units in the
-names), a ``reason`` column for NaNs, and, when the log has a truth group, ``true_<name>``.
+names) with their ``u_``, then ``U95_<name>`` for every output (value +- U95 is the reported
+95 % interval, rig.reduction.coverage), a ``reason`` column for NaNs, and, when the log has a
+truth group, ``true_<name>``.
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ from rig.errors import ParameterError
 from rig.reduction.result import ReducedPoint
 
 LEADING = ("l_over_a", "c_over_a", "mu_v", "mu_T")
+PREFIXES = ("u_", "U95_")  # standard uncertainty, half width of the 95 % interval (same unit as the output)
 TRUTH_COLUMNS = ("l_over_a", "c_over_a", "mu_v", "mu_T")
 
 
@@ -36,3 +39,11 @@ def reduced_table(
                 frame[f"true_{name}"] = [t.get(name, float("nan")) for t in truth]
     frame.index.name = "point"
     return frame
+
+
+def column_output(column: str) -> str:
+    """The output a column belongs to: ``u_<name>`` and ``U95_<name>`` -> ``<name>`` (same unit)."""
+    for prefix in PREFIXES:
+        if column.startswith(prefix):
+            return column[len(prefix):]
+    return column

@@ -25,13 +25,19 @@ from rig import validate
 from rig.errors import ParameterError
 
 Model = Callable[[Mapping[str, float]], Mapping[str, float]]
+MIN_RELATIVE_STEP = 1e-9  # smallest Jacobian step relative to the input's value [1]
 
 
 class Distribution(Enum):
     """Distribution of an input for the Monte-Carlo propagation (first order needs only u)."""
 
     NORMAL = "normal"
-    RECTANGULAR = "rectangular"  # half width sqrt(3) u, e.g. a +-1 count quantisation
+    RECTANGULAR = "rectangular"  # half width sqrt(3) u, e.g. a scale step's bias
+    TRIANGULAR = "triangular"  # half width sqrt(6) u, e.g. a gated count (difference of two uniform phases)
+
+
+HALF_WIDTH_PER_U = {Distribution.RECTANGULAR: math.sqrt(3.0), Distribution.TRIANGULAR: math.sqrt(6.0)}
+"""Half width of a bounded distribution per standard uncertainty [1]."""
 
 
 def rectangular_u(half_width: float) -> float:
@@ -142,7 +148,8 @@ def first_order(
 ) -> Propagation:
     """Propagate with a central-difference Jacobian, step h_i = relative_step u(x_i).
 
-    Inputs with u = 0 get a zero column (not evaluated). Where a perturbed evaluation is NaN
+    Inputs with u = 0 get a zero column (not evaluated); the step is at least MIN_RELATIVE_STEP
+    |x_i|, so that a tiny u cannot make x_i +- h round to x_i. Where a perturbed evaluation is NaN
     (the chain hit a guard) the derivative, and the uncertainty of that output, is NaN.
     """
     validate.number("relative_step", relative_step, 0.0, lo_open=True)
@@ -153,7 +160,7 @@ def first_order(
     for i, u in enumerate(inputs.uncertainties):
         if u == 0.0:
             continue
-        h = relative_step * u
+        h = max(relative_step * u, MIN_RELATIVE_STEP * abs(x0[i]))  # x +- h must differ from x
         step = np.zeros_like(x0)
         step[i] = h
         jac[:, i] = (_evaluate(model, inputs, x0 + step, names) - _evaluate(model, inputs, x0 - step, names)) / (2 * h)
@@ -193,19 +200,27 @@ class MonteCarlo:
 
 
 def draw_inputs(inputs: InputSet, n_samples: int, rng: np.random.Generator) -> np.ndarray:
-    """n_samples draws (n_samples, n_in): correlated normal block, independent rectangular ones."""
+    """n_samples draws (n_samples, n_in): correlated normal block, independent rectangular and
+    triangular ones (symmetric about the value, half width HALF_WIDTH_PER_U u)."""
     validate.integer("n_samples", n_samples, 2)
     x0, u = inputs.values, inputs.uncertainties
-    rect = np.array([q.distribution is Distribution.RECTANGULAR for q in inputs.quantities])
+    kinds = [q.distribution for q in inputs.quantities]
     draws = np.tile(x0, (n_samples, 1))
-    normal = ~rect & (u > 0)
+    normal = np.array([k is Distribution.NORMAL for k in kinds]) & (u > 0)
     if normal.any():
         v = inputs.covariance_matrix()[np.ix_(normal, normal)]
         draws[:, normal] += rng.multivariate_normal(np.zeros(normal.sum()), v, size=n_samples, method="eigh")
-    if rect.any():
-        half = math.sqrt(3.0) * u[rect]
-        draws[:, rect] += rng.uniform(-1.0, 1.0, size=(n_samples, rect.sum())) * half
+    for kind, unit_draw in UNIT_DRAWS.items():
+        cols = np.array([k is kind for k in kinds])
+        if cols.any():
+            draws[:, cols] += unit_draw(rng, (n_samples, int(cols.sum()))) * HALF_WIDTH_PER_U[kind] * u[cols]
     return draws
+
+
+UNIT_DRAWS = {  # draws on [-1, 1] of the bounded distributions: draw(rng, size)
+    Distribution.RECTANGULAR: lambda rng, size: rng.uniform(-1.0, 1.0, size=size),
+    Distribution.TRIANGULAR: lambda rng, size: rng.random(size) - rng.random(size),  # U - U': triangular
+}
 
 
 def monte_carlo(

@@ -16,6 +16,7 @@ from rig.reduction import equations as eq
 from rig.reduction import stand_a
 from rig.reduction.geometry import StandAGeometry
 from rig.reduction.iteration import ReductionSettings
+from rig.reduction.result import Start
 from rig.reduction.uncertainty import monte_carlo
 from rig.wheel_kinematics import dl_dratio, ratio_for_l, stand_a_rolling_point
 from tests.reduction.synthetic import (
@@ -79,7 +80,8 @@ def test_first_order_agrees_with_monte_carlo_within_10_percent():
     names = ("l_over_a", "c_over_a", "alpha_prime", "mu_v", "mu_T")
 
     def model(x):
-        return stand_a.evaluate(x, MU, readings=readings, geometry=G, coefficients=analytic_coefficients,
+        return stand_a.evaluate(x, Start(MU, stand_a.DRIVERS), readings=readings, geometry=G,
+                                coefficients=analytic_coefficients,
                                 settings=ReductionSettings()).values
 
     mc = monte_carlo(model, point.propagation.inputs, names, 3000, np.random.default_rng(np.random.SeedSequence(5)))
@@ -100,7 +102,7 @@ def test_round_trip_counts_return_l_within_the_counting_resolution(l_over_a, gat
     truth = stand_a_truth(MU, 96.2, ratio, analytic_coefficients)
     readings = stand_a_readings(n1, n2, truth, 96.2, marks=marks, gate_time=gate)
     inputs = stand_a.input_set(readings, G)
-    out = stand_a.evaluate(inputs.mapping(inputs.values), MU, readings=readings, geometry=G,
+    out = stand_a.evaluate(inputs.mapping(inputs.values), Start(MU, stand_a.DRIVERS), readings=readings, geometry=G,
                            coefficients=analytic_coefficients, settings=ReductionSettings())
     z = marks[0] / marks[1]
     ratio_hi, ratio_lo = (f2 + 1) / (f1 - 1) * z, (f2 - 1) / (f1 + 1) * z  # exact extremes of N2 z1/(N1 z2)

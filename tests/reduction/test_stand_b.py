@@ -10,6 +10,7 @@ import pytest
 from rig.reduction import stand_b
 from rig.reduction.geometry import StandBGeometry
 from rig.reduction.iteration import ReductionSettings
+from rig.reduction.result import Start
 from rig.reduction.uncertainty import monte_carlo
 from tests.reduction.synthetic import analytic_coefficients, rigid_coefficients, stand_b_readings
 
@@ -59,7 +60,8 @@ def test_alpha_dependent_model_and_monte_carlo():
     names = ("c_over_a", "M_C_N_m", "mu_v", "mu_T", "mu_M")
 
     def model(x):
-        return stand_b.evaluate(x, 0.5, readings=readings, geometry=B, coefficients=analytic_coefficients,
+        return stand_b.evaluate(x, Start(0.5, stand_b.MU_ORDER), readings=readings, geometry=B,
+                                coefficients=analytic_coefficients,
                                 settings=ReductionSettings()).values
 
     mc = monte_carlo(model, point.propagation.inputs, names, 3000, np.random.default_rng(np.random.SeedSequence(11)))

@@ -44,8 +44,12 @@ def test_quick_stand_a_scene_recovers_mu(quick_scene, tmp_path):
     assert (table["true_mu_T"] == 0.4).all() and (table["true_mu_v"] == 0.4).all()
     for name in ("mu_T", "mu_v", "l_over_a"):
         z = np.abs(table[name] - table[f"true_{name}"]) / table[f"u_{name}"]
-        assert (z < 3.0).all(), (name, z.tolist())
+        assert (z[np.isfinite(table[name])] < 3.0).all(), (name, z.tolist())
+    # at T_set = 0 the rolling point sits at l ~ 0, where the lever D of eq. (35) is within its
+    # own uncertainty of zero: mu_T is not identifiable and is reported as NaN with the reason
+    assert np.isnan(table["mu_T"].iloc[1]) and np.isfinite(table["mu_T"].iloc[[0, 2]]).all()
+    assert "mu_T" in str(table["reason"].iloc[1])
     assert table["l_over_a"].iloc[0] < 0.0 < table["l_over_a"].iloc[-1]
     assert np.all(np.diff(table["true_l_over_a"]) > 0)
-    assert "planned 3, in log 3" in report.summary and "mu_T: 3 points" in report.summary
+    assert "planned 3, in log 3" in report.summary and "mu_T: 2 points" in report.summary
     assert (tmp_path / "out" / "reduced_vs_truth.png").is_file()

@@ -3,21 +3,22 @@
 Per point (rig.logbook readers; the truth is never read here):
 * F_T, F_V, T_Mo: mean of the recorded channel [V] converted with the point's calibration
   record (sensors.CalibrationRecord), u from the calibration's covariance (it holds the
-  weights' +-0.098 N) and the scatter of the mean over the gate plus the converter's LSB^2/12;
+  weights' +-0.098 N: nothing is added for them) and the mean's own uncertainty V_b + s^2/n,
+  with the converter step the calibration record logs (``reading_resolution``) and the noise
+  estimated from the samples (rig.stands.yoke.reduction.converter_mean, sensors.quantisation);
 * l, sigma, F_N from the settings with the stand's u_l_setting, u_twist, u_normal_force;
   b/a from the stand's Hertz line contact at F_N (the value the simulation used);
 * direction -1 (reverse running) is mapped onto the canonical frame of the chain (forward,
   spin > 0) by the mirror x -> -x (rig.stands.disc_roller.contact): sigma, F_T and T_Mo change
   sign, l and F_V do not. The chain's M_C = T_Mo + R_c F_T is then T0 = mu a F_N nu_0 >= 0
   (plus the disc-bearing friction, if any: a systematic error of the method).
-The law is the stand's (the one it simulated with); outside its domain the coefficients are
-NaN and the chain reports the point as not reducible, with the reason. Swinging-drive logs
+The law is the stand's (the one it simulated with); outside its domain the coefficients raise
+OutsideModelDomain and the chain reports the point as not reducible, with that reason. Swinging-drive logs
 have no steady operating point and are refused.
 """
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 
 import numpy as np
@@ -27,27 +28,28 @@ from rig.contact.surrogate import TableDomain
 from rig.errors import LogFormatError
 from rig.logbook import PointRecord, point_indices, read_point
 from rig.reduction import stand_b
+from rig.reduction.coefficients import OutsideModelDomain
 from rig.reduction.iteration import ReductionSettings
-from rig.reduction.readings import Measured
-from rig.reduction.table import reduced_table
+from rig.reduction.readings import Measured, converter_mean
+from rig.reduction.table import column_output, reduced_table
 from rig.stands.disc_roller.contact import Law
 from rig.stands.disc_roller.instruments import CHANNELS, record_from_fields
 from rig.stands.disc_roller.parameters import StandBParameters
-from sensors import Adc
 
 CALIBRATION_FIELDS = ("sensitivity", "offset", "u_sensitivity", "u_offset", "cov_sensitivity_offset",
                       "residual_std", "n_steps")
 
 
 def coefficients(law: Law, domain: TableDomain) -> stand_b.Coefficients:
-    """Scalar coefficients(l/a, c/a, alpha') of a vectorised law; NaN outside its domain."""
+    """Scalar coefficients(l/a, c/a, alpha') of a stand law; raises OutsideModelDomain (naming the
+    coordinate and the domain) outside its domain."""
 
     def evaluate(l_over_a: float, c_over_a: float, alpha: float) -> tuple[float, float, float]:
-        inside = all(lo <= x <= hi for x, (lo, hi) in
-                     ((l_over_a, domain.l_over_a), (c_over_a, domain.c_over_a), (alpha, domain.alpha)))
-        if not inside:
-            return math.nan, math.nan, math.nan
-        nu = np.asarray(law(np.array([l_over_a]), np.array([c_over_a]), np.array([alpha])), dtype=float)
+        for name, x, (lo, hi) in (("l/a", l_over_a, domain.l_over_a), ("c/a", c_over_a, domain.c_over_a),
+                                  ("alpha'", alpha, domain.alpha)):
+            if not lo <= x <= hi:
+                raise OutsideModelDomain(name, x, f"[{lo:.6g}, {hi:.6g}], the domain of the stand's contact law")
+        nu = np.asarray(law(float(l_over_a), float(c_over_a), float(alpha)), dtype=float)
         return tuple(float(x) for x in nu.reshape(3))
 
     return evaluate
@@ -66,11 +68,13 @@ def channel_reading(record: PointRecord, channel: str, where: str) -> Measured:
     volts = record.channels[channel].samples
     cal = record.calibration[channel]
     calibration = record_from_fields(channel, {f: _value(cal, f, where) for f in CALIBRATION_FIELDS})
-    lsb = Adc().lsb_V
-    scatter = float(np.var(volts, ddof=1)) / volts.size if volts.size > 1 else 0.0
-    mean = float(np.mean(volts))
-    value = float(calibration.to_quantity(np.array([mean]))[0])
-    u = float(calibration.quantity_standard_uncertainty(np.array([mean]), math.sqrt(scatter + lsb * lsb / 12.0))[0])
+    step = _value(cal, "reading_resolution", where)
+    if not step > 0.0:
+        raise LogFormatError(f"{where}: calibration {channel!r} has reading_resolution = {step!r}, "
+                             "expected the converter's code width > 0 V")
+    mean = converter_mean(volts, step)
+    value = float(calibration.to_quantity(np.array([mean.value]))[0])
+    u = float(calibration.quantity_standard_uncertainty(np.array([mean.value]), mean.u)[0])
     return Measured(value, u)
 
 
@@ -111,11 +115,10 @@ def reduce_log(
         points.append(stand_b.reduce(readings, law, params.geometry, settings))
     frame = reduced_table(points)
     frame.index = pd.Index(indices, name="point")
-    frame.attrs["units"] = {name: _unit(name) for name in frame.columns if name != "reason"}
+    frame.attrs["units"] = {name: _unit(name) for name in frame.columns}
     return frame
 
 
 def _unit(column: str) -> str:
-    """Unit of a reduced column (u_<name> has the unit of <name>): m, N m or 1."""
-    name = column[2:] if column.startswith("u_") else column
-    return {"l_m": "m", "c_m": "m", "M_C_N_m": "N m"}.get(name, "1")
+    """Unit of a reduced column (u_<name>, U95_<name> have the unit of <name>): m, N m or 1."""
+    return {"l_m": "m", "c_m": "m", "M_C_N_m": "N m"}.get(column_output(column), "1")

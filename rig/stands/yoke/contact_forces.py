@@ -4,8 +4,8 @@ From the wheel speeds (w1, w2) [rad/s] to what the drive train needs (vectorised
 
     w01 = w1 sin(alpha1), w02 = w2, w0 = w01 + w02                   eq. (1), opposite-side axes
     w0 C = w01 A1 + w02 A2 = (w02 Delta h, w01 l1 + w02 l2) =: P      eqs. (29)-(31), centroid form
-    (the scalar path calls rig.wheel_kinematics.rolling_point, the reduction's function; the
-    vectorised path is the same centroid in numpy, tested equal to it)
+    (rig.wheel_kinematics, the reduction's functions: rolling_point on the scalar path,
+    centroid_moments - the same centroid's numerator, finite at w0 = 0 - on the vectorised one)
     alpha' = 10 mu (b/a)(v/w0)/R_x,  v = w1 r1                        eq. (21), line contact
     (nu_T, nu_v, nu_0) = law(l/a, c/a, alpha')                        the scene's contact law
     F_x = mu F_N nu_T, F_y = mu F_N nu_v, M_C = -mu a F_N nu_0        eqs. (26)-(28), w0 > 0
@@ -46,7 +46,7 @@ import numpy as np
 from rig import validate
 from rig.reduction.equations import alpha_prime_line_contact
 from rig.reduction.geometry import StandAGeometry
-from rig.wheel_kinematics import rolling_point
+from rig.wheel_kinematics import centroid_moments, rolling_point
 
 Law = Callable[[np.ndarray, np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
 """law(l_over_a, c_over_a, alpha) -> (nu_T, nu_v, nu_0), vectorised (rig.stands.contact_law)."""
@@ -164,8 +164,7 @@ class StandAContact:
         w2 = np.asarray(omega_2, dtype=float)
         w01 = w1 * self._sin_a1
         w0 = w01 + w2
-        p_l = w01 * g.l1 + w2 * g.l2  # w0 l [m/s]
-        p_c = w2 * g.delta_h  # w0 c [m/s]
+        p_c, p_l = centroid_moments(w01, w2, (0.0, g.l1), (g.delta_h, g.l2))  # w0 (c, l) [m rad/s], eqs. (29)-(31)
         sign = np.where(w0 < 0.0, -1.0, 1.0)
         abs_w0 = np.abs(w0)
         safe_w0 = np.maximum(abs_w0, TINY)

@@ -169,6 +169,8 @@ def measure(inst: PointInstruments, gate: GateData) -> Measurement:
     readings = {
         "T2": Quantity(float(np.mean(bal.moment_N_m)), "N m"),
         "balance_over_range": Quantity(float(np.count_nonzero(bal.over_range)), "1"),
+        "balance_resolution": Quantity(bal.resolution_N_m, "N m"),  # scale step, for the reduction's u(T2)
+        "balance_noise_std": Quantity(bal.noise_std_N_m, "N m"),  # reading noise (0: effect off)
         "dynamometer_signal": Quantity(float(np.mean(dyn.volts)), "V"),
         "dynamometer_clipped": Quantity(float(dyn.n_clipped), "1"),
     }

@@ -1,20 +1,30 @@
 """Reduce a stand-A log: each point's record -> rig.reduction.stand_a readings -> eqs. (29)-(35).
 
 Per point (read through rig.logbook's readers; the truth only through rig.logbook.truth, for the
-``true_*`` columns): counts and marks of the common gate, the mean dynamometer signal [V] with
-u = sqrt(s^2/n + LSB^2/12) (scatter of the mean over the gate, converter resolution), the
-calibration record of dynamometer 10 (reading per N on the dynamometer; the weights' +-0.098 N are
-inside the fit's covariance, so ForceCalibration.u_weights = 0 - not counted twice), the balance's
-mean T2 with u = +-0.0196 N m as a rectangular half width (the reduction's convention), F_N from
-the settings with the stand's normal_force_u_N, and b/a = StandAGeometry.b_over_a(F_N).
+``true_*`` columns), the input uncertainties come from what the log records about each
+instrument, so that the simulated instrument and the reduction agree by construction
+(sensors.quantisation for the step of a quantised reading):
+* counters: counts and marks of the common gate; u = 1/sqrt(6) count (rig.reduction.stand_a);
+* dynamometer 10: the mean of the gate's samples [V]; u^2 = V_b + s^2/n with the converter step
+  from the calibration record (``reading_resolution``) and the noise sigma estimated from the
+  samples' scatter s^2 (n ~ 10^3 samples); the calibration record's sensitivity, offset and
+  covariance (which already hold the weights' +-0.098 N: ForceCalibration.u_weights = 0, not
+  counted twice);
+* tangent balance: the mean T2 of its readings, with the scale step ``balance_resolution`` and
+  the noise ``balance_noise_std`` the balance states in the log: the step's bias V_b (rectangular,
+  does not average out) and the scatter of the mean max(s^2, Delta^2/12 + sigma^2 - V_b)/n (the
+  larger of what the readings show and what the instrument alone gives, so a moment that moves
+  within the gate is covered); 0.049 N is a scale *step* (sensors.balance), not the +-bound of
+  the paper's wording (docs/reduction.md section 4);
+* F_N from the settings with the stand's ``normal_force_u_N``; b/a = StandAGeometry.b_over_a(F_N).
 The contact law is the one the stand simulated with (rig.stands.yoke.laws), so a mu recovered
 from a synthetic log tests the method, not a mismatch of models. Outside the law's domain the
-coefficients are NaN (the chain reports the point as not reducible, with the reason).
+coefficients raise OutsideModelDomain and the chain reports the point as not reducible with
+that reason.
 """
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 
 import numpy as np
@@ -24,31 +34,33 @@ from rig.errors import LogFormatError
 from rig.logbook import PointRecord, point_indices, read_point
 from rig.logbook.truth import read_truth
 from rig.reduction import stand_a
+from rig.reduction.coefficients import OutsideModelDomain
 from rig.reduction.geometry import StandAGeometry
 from rig.reduction.iteration import ReductionSettings
-from rig.reduction.readings import ForceCalibration, Measured
-from rig.reduction.table import TRUTH_COLUMNS, reduced_table
+from rig.reduction.readings import ForceCalibration, Measured, converter_mean, scale_mean
+from rig.reduction.table import TRUTH_COLUMNS, column_output, reduced_table
 from rig.stands.yoke.contact_forces import ContactDomain, Law
-from rig.stands.yoke.instruments import CHANNELS, DYNAMOMETER
+from rig.stands.yoke.instruments import BALANCE, CHANNELS, DYNAMOMETER
 from rig.stands.yoke.parameters import YokeParameters
-from sensors import Adc
 
-UNITS = {"omega_1_rad_s": "rad/s", "spin_rad_s": "rad/s", "l_m": "m", "c_m": "m", "F_y_N": "N"}
-"""Units of the dimensional outputs of rig.reduction.stand_a (and their u_ columns); the rest are "1"."""
+UNITS = {"omega_1_rad_s": "rad/s", "spin_rad_s": "rad/s", "l_m": "m", "c_m": "m", "D_m": "m", "F_y_N": "N"}
+"""Units of the dimensional outputs of rig.reduction.stand_a (and their u_, U95_ columns); the rest are "1"."""
 
 LawFor = Callable[[float, StandAGeometry], tuple[Law, ContactDomain]]
 """law_for(b_over_a, geometry) -> (law, its domain)."""
 
 
 def coefficients(law: Law, domain: ContactDomain) -> stand_a.Coefficients:
-    """The reduction's scalar coefficients(l/a, c/a, alpha') from a vectorised law; NaN outside its domain."""
+    """The reduction's scalar coefficients(l/a, c/a, alpha') from a stand law; raises
+    OutsideModelDomain (naming the coordinate and the domain) outside the law's domain."""
 
     def evaluate(l_over_a: float, c_over_a: float, alpha: float) -> tuple[float, float, float]:
-        inside = all(lo <= x <= hi for x, (lo, hi) in
-                     ((l_over_a, domain.l_over_a), (c_over_a, domain.c_over_a), (alpha, domain.alpha)))
-        if not inside:
-            return math.nan, math.nan, math.nan
-        nu = law(np.array([l_over_a]), np.array([c_over_a]), np.array([alpha]))
+        for name, x, (lo, hi) in (("l/a", l_over_a, domain.l_over_a), ("c/a", c_over_a, domain.c_over_a),
+                                  ("alpha'", alpha, domain.alpha)):
+            if not lo <= x <= hi:
+                raise OutsideModelDomain(name, x, f"[{lo:.6g}, {hi:.6g}], the domain of the stand's contact law",
+                                         hint="the rolling point or alpha' left the table (hard case 6)")
+        nu = law(float(l_over_a), float(c_over_a), float(alpha))
         return tuple(float(np.asarray(x).ravel()[0]) for x in nu)
 
     return evaluate
@@ -60,6 +72,12 @@ def _quantity(group, name: str, where: str) -> float:
     return float(group[name].value)
 
 
+def _samples(record: PointRecord, channel: str, where: str) -> np.ndarray:
+    if channel not in record.channels:
+        raise LogFormatError(f"{where}: channel {channel!r} is missing")
+    return np.asarray(record.channels[channel].samples, dtype=float)
+
+
 def point_readings(record: PointRecord, params: YokeParameters, geometry: StandAGeometry,
                    where: str) -> stand_a.StandAReadings:
     """The stand_a readings of one logged point (``where`` names it in errors)."""
@@ -69,28 +87,30 @@ def point_readings(record: PointRecord, params: YokeParameters, geometry: StandA
     for name in CHANNELS:
         if name not in counters:
             raise LogFormatError(f"{where}: counter {name!r} is missing")
-    if DYNAMOMETER not in record.channels or DYNAMOMETER not in record.calibration:
-        raise LogFormatError(f"{where}: channel or calibration {DYNAMOMETER!r} is missing")
-    volts = record.channels[DYNAMOMETER].samples
-    lsb = Adc().lsb_V
-    spread = float(np.std(volts, ddof=1)) ** 2 / volts.size if volts.size > 1 else 0.0
+    if DYNAMOMETER not in record.calibration:
+        raise LogFormatError(f"{where}: calibration {DYNAMOMETER!r} is missing")
     cal = record.calibration[DYNAMOMETER]
     u_s, u_o = _quantity(cal, "u_sensitivity", where), _quantity(cal, "u_offset", where)
+    step = _quantity(cal, "reading_resolution", where)
+    if not step > 0.0:
+        raise LogFormatError(f"{where}: calibration {DYNAMOMETER!r} has reading_resolution = {step!r}, "
+                             "expected the converter's code width > 0 V")
+    balance = scale_mean(_samples(record, BALANCE, where), _quantity(record.readings, "balance_resolution", where),
+                           _quantity(record.readings, "balance_noise_std", where))
     f_n = _quantity(record.settings, "normal_force", where)
     return stand_a.StandAReadings(
         counts_1=counters["wheel_1"].count, counts_2=counters["wheel_2"].count,
         marks_1=counters["wheel_1"].marks_per_rev, marks_2=counters["wheel_2"].marks_per_rev,
         gate_time=Measured(record.counters.gate_time_s, params.timer_u_s),
         normal_force=Measured(f_n, params.normal_force_u_N),
-        dynamometer_signal=Measured(float(np.mean(volts)), math.sqrt(spread + lsb * lsb / 12.0)),
+        dynamometer_signal=converter_mean(_samples(record, DYNAMOMETER, where), step),
         dynamometer=ForceCalibration(
             sensitivity=_quantity(cal, "sensitivity", where), offset=_quantity(cal, "offset", where),
             u_sensitivity=u_s, u_offset=u_o,
             covariance=float(np.clip(_quantity(cal, "cov_sensitivity_offset", where), -u_s * u_o, u_s * u_o)),
-            u_weights=0.0,
+            u_weights=0.0,  # inside the calibration record's covariance (sensors.calibration)
         ),
-        brake_moment=Measured(_quantity(record.readings, "T2", where),
-                              geometry.balance_moment_half_width / math.sqrt(3)),
+        brake_moment=Measured(_quantity(record.readings, "T2", where), balance.u, balance.u_step),
         b_over_a=geometry.b_over_a(f_n),
     )
 
@@ -115,9 +135,9 @@ def reduce_log(path, params: YokeParameters, law_for: LawFor,
     frame.index = pd.Index(indices, name="point")
     for index, problems in zip(indices, out_of_range):
         for columns, why in problems:
-            frame.loc[index, [c for name in columns for c in (name, f"u_{name}")]] = np.nan
+            frame.loc[index, [c for name in columns for c in (name, f"u_{name}", f"U95_{name}")]] = np.nan
             frame.loc[index, "reason"] = "; ".join(r for r in (frame.loc[index, "reason"], why) if r)
-    frame.attrs["units"] = {column: UNITS.get(column.removeprefix("u_"), "1") for column in frame.columns}
+    frame.attrs["units"] = {column: UNITS.get(column_output(column), "1") for column in frame.columns}
     return frame
 
 

@@ -9,6 +9,7 @@ import pytest
 
 from rig.errors import ParameterError
 from rig.logbook import LogWriter, RunMetadata, read_point, read_reduced, utc_timestamp, write_reduced
+from rig.reduction.coefficients import OutsideModelDomain
 from rig.stands.base import ContactSpec, DriveMode
 from rig.stands.yoke.contact_forces import ContactDomain
 from rig.stands.yoke.reduction import coefficients, point_readings
@@ -35,7 +36,8 @@ def test_readings_come_from_the_record(logged):
     assert (r.counts_1, r.marks_1) == (record.counters.counters["wheel_1"].count, 60)
     assert r.b_over_a == 2.0  # b/a = 2 at 385 N (seed 000)
     assert r.normal_force.value == 385.0 and r.normal_force.u == st.params.normal_force_u_N
-    assert r.brake_moment.u == pytest.approx(0.0196 / math.sqrt(3))
+    # the balance's 0.049 N step at the 0.4 m arm is a rectangular bias of the mean reading
+    assert (r.brake_moment.u, r.brake_moment.u_step) == (0.0, pytest.approx(0.0196 / math.sqrt(12)))
     assert r.dynamometer.u_weights == 0.0  # the weights are inside the calibration's covariance
     cal = st.calibration(4)
     assert r.dynamometer.sensitivity == cal.sensitivity
@@ -47,11 +49,14 @@ def test_readings_come_from_the_record(logged):
     assert 0.1 < u < 2.0
 
 
-def test_coefficients_outside_the_domain_are_nan_not_an_exception():
+def test_coefficients_outside_the_domain_say_why():
+    """The reduction turns this error into NaN with the reason (rig.reduction.coefficients)."""
     f = coefficients(standin.coefficients, ContactDomain((-1.0, 1.0), (0.0, 0.5), (0.1, 2.0)))
     assert all(math.isfinite(x) for x in f(0.2, 0.1, 0.5))
-    assert all(math.isnan(x) for x in f(1.2, 0.1, 0.5))
-    assert all(math.isnan(x) for x in f(0.2, 0.1, 3.0))
+    with pytest.raises(OutsideModelDomain, match="l/a = 1.2"):
+        f(1.2, 0.1, 0.5)
+    with pytest.raises(OutsideModelDomain, match="alpha"):
+        f(0.2, 0.1, 3.0)
 
 
 def test_reduce_log_accepts_the_own_laws_a_spec_or_a_callable(logged):
