@@ -8,7 +8,8 @@ Four axes, each varied on its own with everything else at the scene's setting (d
   factor 1 is the scene's own). Reference: the largest factor. Only for a scene with a table.
 * DRIVE - quasi-static drive (without the effects the stand refuses without dynamics, e.g.
   stand A's brake loop; left out if the stand refuses the drive), and the dynamic drive with the
-  stand's integrator tolerances multiplied by a factor (rig.accuracy.tolerance). Reference:
+  stand's integrator tolerances multiplied by a factor (the stand parameter
+  ode_tolerance_factor). Reference:
   dynamic at the smallest factor.
 * GATE - gate time (the scene's times a factor); the "error" is the stated uncertainty and the
   cost the lab time, so no reference run is needed.

@@ -18,7 +18,6 @@ from rig.accuracy.plot import pareto_figure
 from rig.accuracy.profiler import Profile
 from rig.accuracy.schedule import Progress, measure_all
 from rig.accuracy.table import result_table, scene_on_front
-from rig.accuracy.tolerance import RELATIVE_TOLERANCES, tolerances
 from rig.scenes.procedure import Procedure
 from rig.scenes.stand_scene import StandScene
 
@@ -78,10 +77,8 @@ def header_lines(scene: StandScene, design: StudyDesign, options: StudyOptions, 
              "inverse-variance weighted RMS of (reduced - truth). Gate axis: median stated standard "
              "uncertainty against lab time.",
              ]
-    if scene.stand in RELATIVE_TOLERANCES:
-        values = ", ".join(f"{k} = {v:g}" for k, v in tolerances(scene.stand).items())
-        lines.append(f"* ODE tolerances: the stand's relative tolerances ({values}) times the factor "
-                     "(rig.accuracy.tolerance).")
+    lines.append("* ODE tolerance: the stand's relative integrator tolerances times the factor (the stand "
+                 "parameter ode_tolerance_factor).")
     return lines
 
 

@@ -48,6 +48,11 @@ class Integrator:
     train: DriveTrain
     atol: np.ndarray
     max_step: float
+    tolerance_factor: float = 1.0  # multiplies RTOL (parameter ode_tolerance_factor)
+
+    @property
+    def rtol(self) -> float:
+        return RTOL * self.tolerance_factor
 
     def jacobian(self, t: float, y: np.ndarray) -> np.ndarray:
         """Forward-difference Jacobian d(dy/dt)/dy [1/s and mixed units] from one vectorised call.
@@ -63,7 +68,7 @@ class Integrator:
     def run(self, t0: float, t1: float, y0: np.ndarray, dense: bool = False):
         """solve_ivp result from (t0, y0) to t1 [s]; ConvergenceError if the integrator fails."""
         sol = solve_ivp(
-            self.train.rhs, (t0, t1), y0, method=METHOD, jac=self.jacobian, rtol=RTOL, atol=self.atol,
+            self.train.rhs, (t0, t1), y0, method=METHOD, jac=self.jacobian, rtol=self.rtol, atol=self.atol,
             dense_output=dense, max_step=self.max_step,
         )
         if sol.status < 0 or not np.all(np.isfinite(sol.y[:, -1])):
@@ -92,7 +97,7 @@ def settle(
     value = residual(0.0, y0)
     below = value < tolerance
     train = integrator.train
-    solver = Radau(train.rhs, 0.0, y0, timeout, jac=integrator.jacobian, rtol=RTOL, atol=integrator.atol,
+    solver = Radau(train.rhs, 0.0, y0, timeout, jac=integrator.jacobian, rtol=integrator.rtol, atol=integrator.atol,
                    max_step=integrator.max_step)
     check = interval
     t, y = 0.0, y0

@@ -75,6 +75,10 @@ PARAMETERS: Mapping[str, ParameterSpec] = {
     "settle_tolerance": ParameterSpec(
         1e-3, "1", 1e-6, 0.1, "[assumed] numerical: relative distance to the steady state that counts as settled"
     ),
+    "ode_tolerance_factor": ParameterSpec(
+        1.0, "1", 1e-3, 1e3, "[assumed] numerical: factor on the drive-train integrator's relative tolerance (1e-7: "
+        "rig.stands.disc_roller.integration); rig accuracy studies it"
+    ),
 }
 
 EFFECTS: Mapping[str, EffectSpec] = {
@@ -162,6 +166,7 @@ class StandBParameters:
     momentometer_arm: float
     point_period: float
     settle_tolerance: float
+    ode_tolerance_factor: float
 
     @property
     def geometry(self) -> StandBGeometry:

@@ -48,7 +48,8 @@ class DiscRollerPoint(PointSimulation):
             self.y = steady_state(stand.drive_train(previous), previous.direction).y
         self.t = 0.0
         set_speed = abs(self.train.set_speed) if not self.swinging else self._swing_speed()
-        self.integrator = Integrator(self.train, absolute_tolerances(self.train, set_speed), self._max_step())
+        self.integrator = Integrator(self.train, absolute_tolerances(self.train, set_speed), self._max_step(),
+                                     stand.params.ode_tolerance_factor)
         self.settled = False
         self.report: SettleReport | None = None
 

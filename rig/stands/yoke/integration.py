@@ -68,12 +68,14 @@ def atol(train: DriveTrain) -> np.ndarray:
     return np.array([scale[name] for name in train.names])
 
 
-def settle(train: DriveTrain, y0: np.ndarray, target: Target, timeout_s: float) -> tuple[float, np.ndarray, float]:
+def settle(train: DriveTrain, y0: np.ndarray, target: Target, timeout_s: float,
+           tolerance_factor: float = 1.0) -> tuple[float, np.ndarray, float]:
     """Integrate from t = 0 until the criterion holds over a window; (t [s], y, residual).
 
-    Returns with residual > 1 if the timeout [s] is reached first (the caller reports it).
+    Returns with residual > 1 if the timeout [s] is reached first (the caller reports it);
+    tolerance_factor multiplies the relative tolerance RTOL (parameter ode_tolerance_factor).
     """
-    solver = Radau(train.rhs, 0.0, y0, timeout_s, rtol=RTOL, atol=atol(train), jac=train.jacobian,
+    solver = Radau(train.rhs, 0.0, y0, timeout_s, rtol=RTOL * tolerance_factor, atol=atol(train), jac=train.jacobian,
                    max_step=SETTLE_WINDOW_S / 3.0)
     times, states = [0.0], [np.array(y0, dtype=float)]
     residual = np.inf
@@ -98,11 +100,13 @@ def settle(train: DriveTrain, y0: np.ndarray, target: Target, timeout_s: float) 
     return float(solver.t), solver.y.copy(), float(residual)
 
 
-def gate(train: DriveTrain, t0: float, y0: np.ndarray, duration: float) -> tuple[np.ndarray, np.ndarray]:
-    """Integrate over the gate [t0, t0 + duration] [s]; samples (t [s], y (n, k)) at GATE_SAMPLE_RATE_HZ."""
+def gate(train: DriveTrain, t0: float, y0: np.ndarray, duration: float,
+         tolerance_factor: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
+    """Integrate over the gate [t0, t0 + duration] [s]; samples (t [s], y (n, k)) at GATE_SAMPLE_RATE_HZ;
+    tolerance_factor multiplies RTOL_GATE."""
     n = max(int(np.ceil(duration * GATE_SAMPLE_RATE_HZ)), 2) + 1
     t_eval = np.linspace(t0, t0 + duration, n)
-    sol = solve_ivp(train.rhs, (t0, t0 + duration), y0, method="Radau", t_eval=t_eval, rtol=RTOL_GATE,
+    sol = solve_ivp(train.rhs, (t0, t0 + duration), y0, method="Radau", t_eval=t_eval, rtol=RTOL_GATE * tolerance_factor,
                     atol=atol(train), jac=train.jacobian, max_step=duration)
     if sol.status != 0:
         raise ConvergenceError(f"stand A drive train: integration of the gate failed ({sol.message})")

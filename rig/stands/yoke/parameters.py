@@ -68,6 +68,9 @@ PARAMETERS: Mapping[str, ParameterSpec] = MappingProxyType({
                                       "setting F_N (scale of spring 5/screw 6)"),
     "dynamometer_rate_Hz": ParameterSpec(50.0, "Hz", 1.0, 5000.0, "[assumed] sampling of the dynamometer "
                                          "amplifier output over the gate"),
+    "ode_tolerance_factor": ParameterSpec(1.0, "1", 1e-3, 1e3, "[assumed] numerical: factor on the drive-train integrator's "
+                                          "relative tolerances (1e-5 settling, 1e-4 over the gate: "
+                                          "rig.stands.yoke.integration); rig accuracy studies it"),
     "balance_rate_Hz": ParameterSpec(1.0, "Hz", 0.05, 100.0, "[assumed] readings of the tangent balance per "
                                      "second (the operator reads the pointer)"),
     "point_period_s": ParameterSpec(60.0, "s", 1.0, 3600.0, "[assumed] run time per operating point, places "
@@ -151,6 +154,7 @@ class YokeParameters:
     timer_u_s: float
     normal_force_u_N: float
     dynamometer_rate_Hz: float
+    ode_tolerance_factor: float
     balance_rate_Hz: float
     point_period_s: float
     speed_ramp_s: float

@@ -119,7 +119,8 @@ class YokePoint(PointSimulation):
             self._report = SettleReport(0.0, "quasi-static drive: the steady state is solved directly", 0.0,
                                         self.start)
             return self._report
-        t, y, residual = integration.settle(self.train, self.y0, target, timeout)
+        t, y, residual = integration.settle(self.train, self.y0, target, timeout,
+                                            self.stand.params.ode_tolerance_factor)
         if residual > 1.0:
             raise SettleTimeoutError(self.settings, timeout, residual, target.criterion)
         self._settled = (t, y)
@@ -134,7 +135,7 @@ class YokePoint(PointSimulation):
         t_open, y_open = self._settled
         if self.train is None:
             return self._static_gate(duration)
-        t, y = integration.gate(self.train, t_open, y_open, duration)
+        t, y = integration.gate(self.train, t_open, y_open, duration, self.stand.params.ode_tolerance_factor)
         w1 = np.asarray(self.train.omega_1(t, y), dtype=float)
         sample = self.contact.evaluate(w1, y[2])
         theta_1, theta_2 = self.train.angles(t, y)
