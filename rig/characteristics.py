@@ -71,14 +71,12 @@ def sweep(
 
 def plot(table: pd.DataFrame, path: Path, title: str) -> Path:
     """Grid of panels: one row per case, columns nu_T, nu_v, nu_0 versus alpha' (log axis)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from rig.plotting import new_figure
 
     keys = ["shape", "b_over_a", "c_over_a", "l_over_a"]
     groups = list(table.groupby(keys, sort=False))
-    fig, axes = plt.subplots(len(groups), 3, figsize=(12, 2.8 * len(groups)), squeeze=False, sharex=True)
+    fig = new_figure(figsize=(12, 2.8 * len(groups)))
+    axes = fig.subplots(len(groups), 3, squeeze=False, sharex=True)
     styles = {"rigid": ":", "linear": "--", "fastsim": "-.", "kinematic": "-"}
     for row, (key, group) in zip(axes, groups):
         case = Case(*key)
@@ -105,5 +103,4 @@ def plot(table: pd.DataFrame, path: Path, title: str) -> Path:
     fig.suptitle(title)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
-    plt.close(fig)
     return path

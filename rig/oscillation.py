@@ -184,12 +184,10 @@ def plateau_onset(table: pd.DataFrame, column: str = "max_work_J_m2") -> float:
 
 def plot_sweep(table: pd.DataFrame, path: Path, title: str) -> Path:
     """max W and max slip path versus e (bottom axis) and the drive amplitude (top), e = 1, 1.5 marked."""
-    import matplotlib
+    from rig.plotting import new_figure
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, (ax_w, ax_u) = plt.subplots(2, 1, figsize=(7, 6.5), sharex=True)
+    fig = new_figure(figsize=(7, 6.5))
+    ax_w, ax_u = fig.subplots(2, 1, sharex=True)
     ax_w.plot(table["stroke_ratio"], table["max_work_J_m2"], "o-")
     ax_w.set_ylabel("max W per cycle [J/m$^2$]")
     ax_u.plot(table["stroke_ratio"], table["max_slip_path_m"] * 1e6, "s-", label="total")
@@ -210,18 +208,15 @@ def plot_sweep(table: pd.DataFrame, path: Path, title: str) -> Path:
     fig.suptitle(title, fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
-    plt.close(fig)
     return path
 
 
 def plot_work_map(work: WorkMap, path: Path, title: str) -> Path:
     """Map of the frictional work density W [J/m^2] on the material over one cycle."""
-    import matplotlib
+    from rig.plotting import new_figure
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, ax = plt.subplots(figsize=(7, 3.6))
+    fig = new_figure(figsize=(7, 3.6))
+    ax = fig.subplots()
     extent = [work.x[0] * 1e3, work.x[-1] * 1e3, work.y[0] * 1e3, work.y[-1] * 1e3]
     image = ax.imshow(work.work.T, origin="lower", extent=extent, aspect="auto", cmap="inferno")
     fig.colorbar(image, ax=ax, label="W per cycle [J/m$^2$]")
@@ -230,5 +225,4 @@ def plot_work_map(work: WorkMap, path: Path, title: str) -> Path:
     ax.set_title(title, fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
-    plt.close(fig)
     return path

@@ -81,15 +81,13 @@ def _panel(ax, rows: pd.DataFrame, gate: bool, title: str) -> None:
 
 def pareto_figure(design: StudyDesign, table: pd.DataFrame, path: Path, title: str) -> Path:
     """Write the figure (PNG) to ``path`` and return it (matplotlib, Agg backend, imported here)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from rig.plotting import new_figure
 
     count = len(design.axes)
     columns = 2 if count > 1 else 1
     rows_n = (count + columns - 1) // columns
-    fig, axes = plt.subplots(rows_n, columns, figsize=(6.0 * columns, 4.6 * rows_n), squeeze=False)
+    fig = new_figure(figsize=(6.0 * columns, 4.6 * rows_n))
+    axes = fig.subplots(rows_n, columns, squeeze=False)
     for ax, plan in zip(axes.flat, design.axes):
         _panel(ax, table[table["axis"] == plan.axis.value], plan.axis is Axis.GATE, plan.axis.value)
     for ax in list(axes.flat)[count:]:
@@ -97,5 +95,4 @@ def pareto_figure(design: StudyDesign, table: pd.DataFrame, path: Path, title: s
     fig.suptitle(title, fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
-    plt.close(fig)
     return path

@@ -312,15 +312,13 @@ def observation_lines(points: pd.DataFrame, name: str) -> list[str]:
 
 def draw(points: pd.DataFrame, curves: dict[tuple, pd.DataFrame], path: Path, title: str, caption: str) -> None:
     """The four panels into ``path`` (PNG): points +-2u, truth lines, one colour per curve."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from rig.plotting import colors, new_figure
 
     groups = series(points)
     keys = [k for k, _ in groups]
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    fig, axes = plt.subplots(2, 2, figsize=(11.0, 8.0), sharex=True)
+    colors = colors()
+    fig = new_figure(figsize=(11.0, 8.0))
+    axes = fig.subplots(2, 2, sharex=True)
     for ax, (column, (_, label, marker)) in zip(axes.flat, QUANTITIES.items()):
         for i, (key, rows) in enumerate(groups):
             color = colors[i % len(colors)]
@@ -338,7 +336,6 @@ def draw(points: pd.DataFrame, curves: dict[tuple, pd.DataFrame], path: Path, ti
     fig.text(0.5, 0.01, caption, ha="center", va="bottom", fontsize=8, wrap=True)
     fig.subplots_adjust(left=0.08, right=0.98, bottom=0.12, top=0.9, wspace=0.22, hspace=0.08)  # fixed: no layout pass
     fig.savefig(path, dpi=120)
-    plt.close(fig)
 
 
 def _campaign(name: str, reduced: pd.DataFrame, log_path: Path, out_dir: Path, title: str) -> CampaignOutcome:

@@ -248,17 +248,15 @@ def _truth_series(group: pd.DataFrame, column: str) -> list[tuple[str, str]]:
 
 def _draw(points: pd.DataFrame, path: Path, title: str, with_c_over_a: bool) -> None:
     """The figure: panels F_y, mu_T and mu_v, T2 (and c/a) versus l/a; one colour per b/a."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from rig.plotting import colors, new_figure
 
     panels = [("F_y_N", "$F_y$ [N]"), ("mu", r"$\mu_T$, $\mu_v$ [1]"), ("T2_N_m", "$T_2$ [N m]")]
     if with_c_over_a:
         panels.append(("c_over_a", "$c/a$ [1]"))
-    fig, axes = plt.subplots(len(panels), 1, figsize=(6.4, 2.6 * len(panels) + 0.8), sharex=True, squeeze=False)
+    fig = new_figure(figsize=(6.4, 2.6 * len(panels) + 0.8))
+    axes = fig.subplots(len(panels), 1, sharex=True, squeeze=False)
     axes = axes[:, 0]
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    colors = colors()
     for k, (b, group) in enumerate(_groups(points)):
         color, tag = colors[k % len(colors)], f"b/a = {b:g} ($F_N$ = {group['normal_force_N'].iloc[0]:g} N)"
         x, ux = group["l_over_a"].to_numpy(dtype=float), group["u_l_over_a"].to_numpy(dtype=float)
@@ -289,7 +287,6 @@ def _draw(points: pd.DataFrame, path: Path, title: str, with_c_over_a: bool) -> 
     fig.suptitle(textwrap.fill(title, 95), fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
-    plt.close(fig)
 
 
 def _campaign(name: str, caption: str, reduced: pd.DataFrame, log_path, out_dir, title: str,

@@ -47,16 +47,14 @@ def reduced_vs_truth_figure(table: pd.DataFrame, plan: Sequence[PlannedPoint], p
     names = [n for n in QUANTITIES if n in table.columns]
     if not names or table.empty:
         return None
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from rig.plotting import colors, new_figure
 
     series, x_label = _series(table, plan, procedure)
     columns = min(2, len(names))
     rows = math.ceil(len(names) / columns)
-    fig, axes = plt.subplots(rows, columns, figsize=(5.5 * columns, 3.6 * rows), squeeze=False)
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    fig = new_figure(figsize=(5.5 * columns, 3.6 * rows))
+    axes = fig.subplots(rows, columns, squeeze=False)
+    colors = colors()
     for ax, name in zip(axes.flat, names):
         for k, (label, x, positions) in enumerate(series):
             color = colors[k % len(colors)]
@@ -76,5 +74,4 @@ def reduced_vs_truth_figure(table: pd.DataFrame, plan: Sequence[PlannedPoint], p
     fig.suptitle(title, fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
-    plt.close(fig)
     return path
