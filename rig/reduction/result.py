@@ -24,6 +24,7 @@ import numpy as np
 
 from rig.reduction.budget import UncertaintyBudget, budget
 from rig.reduction.coverage import expanded_uncertainty
+from rig.reduction.iteration import ReductionSettings, solve_with_drivers
 from rig.reduction.uncertainty import InputSet, Propagation, first_order
 
 
@@ -50,6 +51,30 @@ class Evaluation:
     mu: float
     iterations: int
     driver: str = ""
+
+
+def evaluate_fixed_point(state_at: Callable[[float], tuple[dict, dict]], start: Start, settings: ReductionSettings,
+                         out: dict[str, float], driven: tuple[str, ...]) -> Evaluation:
+    """The mu <-> alpha' fixed point of a chain (rig.reduction.iteration.solve_with_drivers).
+
+    state_at(mu) -> (driven values, reasons for their NaNs) at alpha'(mu); ``out`` holds the
+    chain's values that do not depend on mu and receives the driven ones at the fixed point.
+    """
+    def make_estimate(driver: str):
+        def estimate(mu: float):
+            state, reasons = state_at(mu)
+            value = state[driver]
+            if math.isfinite(value) and value > 0.0:
+                return value, (state, reasons), ""
+            return math.nan, (state, reasons), reasons.get(driver) or f"{driver} = {value:.6g} is not positive"
+        return estimate
+
+    fixed, driver = solve_with_drivers(make_estimate, start.drivers, start.mu, start.probe, settings, start.no_driver)
+    if fixed.reason:
+        return Evaluation(out, dict.fromkeys(driven, fixed.reason), math.nan, fixed.iterations)
+    state, reasons = fixed.state
+    out.update(state)
+    return Evaluation(out, dict(reasons), fixed.mu, fixed.iterations, driver)
 
 
 @dataclass(frozen=True)

@@ -32,9 +32,9 @@ from rig.reduction import equations as eq
 from rig.reduction.coefficients import Coefficients, call_model
 from rig.reduction.drivers import significant_drivers
 from rig.reduction.geometry import StandAGeometry
-from rig.reduction.iteration import ReductionSettings, solve_with_drivers
+from rig.reduction.iteration import ReductionSettings
 from rig.reduction.readings import ForceCalibration, Measured, reading_inputs, reading_value
-from rig.reduction.result import Evaluation, Guard, ReducedPoint, Start, reduce_point
+from rig.reduction.result import Evaluation, Guard, ReducedPoint, Start, evaluate_fixed_point, reduce_point
 from rig.reduction.uncertainty import Covariance, Distribution, InputQuantity, InputSet
 from rig.wheel_kinematics import SpinTooSmallError
 from sensors import COUNT_QUANTISATION_STD
@@ -198,21 +198,7 @@ def evaluate(
             )
         return state, reasons
 
-    def make_estimate(driver: str):
-        def estimate(mu: float):
-            state, reasons = state_at(mu)
-            value = state[driver]
-            if math.isfinite(value) and value > 0.0:
-                return value, (state, reasons), ""
-            return math.nan, (state, reasons), reasons.get(driver) or f"{driver} = {value:.6g} is not positive"
-        return estimate
-
-    fixed, driver = solve_with_drivers(make_estimate, start.drivers, start.mu, start.probe, settings, start.no_driver)
-    if fixed.reason:
-        return Evaluation(out, dict.fromkeys(DRIVEN, fixed.reason), math.nan, fixed.iterations)
-    state, reasons = fixed.state
-    out.update(state)
-    return Evaluation(out, dict(reasons), fixed.mu, fixed.iterations, driver)
+    return evaluate_fixed_point(state_at, start, settings, out, DRIVEN)
 
 
 def reduce(
