@@ -16,7 +16,6 @@ gate_time.png (u(l/a) and u(mu_T) versus T, with the 1/T line of counting). Runt
 from __future__ import annotations
 
 import argparse
-import math
 from dataclasses import dataclass
 from pathlib import Path
 

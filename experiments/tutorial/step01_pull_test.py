@@ -17,6 +17,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
 
+from rig.teaching.script import argument_parser, write_step
 from rig.teaching.friction_table import QUOTED_RANGES, static_coefficient
 from rig.teaching.pull_test import pull_test
 
@@ -29,8 +30,7 @@ MU_K = QUOTED_RANGES[0].kinetic.high  # 0.6, upper end of slide 18's steel-steel
 
 
 def arguments(argv: list[str] | None) -> argparse.Namespace:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-o", "--output", type=Path, default=Path("out/tutorial"), help="output folder")
+    parser = argument_parser(__doc__)
     parser.add_argument("--mu-s", type=float, default=MU_S, help="static coefficient [1] (default: steel-steel 0.80)")
     parser.add_argument("--mu-k", type=float, default=MU_K, help="kinetic coefficient [1] (default 0.6)")
     return parser.parse_args(argv)
@@ -38,12 +38,9 @@ def arguments(argv: list[str] | None) -> argparse.Namespace:
 
 def main(argv: list[str] | None = None) -> list[Path]:
     args = arguments(argv)
-    args.output.mkdir(parents=True, exist_ok=True)
     trace = pull_test(MASS_KG, args.mu_s, args.mu_k, FORCE_RATE_N_S, np.linspace(0.0, DURATION_S, 1201))
     table = pd.DataFrame(dict(time_s=trace.time_s, pull_N=trace.pull_N, friction_N=trace.friction_N,
                               speed_m_s=trace.speed_m_s))
-    csv = args.output / f"{STEM}.csv"
-    table.to_csv(csv, index=False)
 
     fig = Figure(figsize=(11, 4.2), layout="constrained")
     ax1, ax2 = fig.subplots(1, 2)
@@ -63,9 +60,7 @@ def main(argv: list[str] | None = None) -> list[Path]:
     ax2.legend(loc="upper left", fontsize=8)
     for ax in (ax1, ax2):
         ax.grid(alpha=0.3)
-    png = args.output / f"{STEM}.png"
-    fig.savefig(png, dpi=110)
-    return [png, csv]
+    return write_step(fig, table, args.output, STEM)
 
 
 if __name__ == "__main__":

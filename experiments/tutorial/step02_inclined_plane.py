@@ -19,6 +19,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
 
+from rig.teaching.script import argument_parser, write_step
 from rig.teaching.friction_table import table_row
 from rig.teaching.inclined_plane import at_rest, critical_angle, sliding_acceleration
 
@@ -29,22 +30,18 @@ MU_K_VALUES = (0.0, 0.15, 0.3, 0.6)  # kinetic coefficients drawn [1]; 0.15-0.6:
 
 
 def arguments(argv: list[str] | None) -> argparse.Namespace:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-o", "--output", type=Path, default=Path("out/tutorial"), help="output folder")
+    parser = argument_parser(__doc__)
     return parser.parse_args(argv)
 
 
 def main(argv: list[str] | None = None) -> list[Path]:
     args = arguments(argv)
-    args.output.mkdir(parents=True, exist_ok=True)
     alpha_deg = np.linspace(0.0, 90.0, 181)
     alpha = np.radians(alpha_deg)
     columns = {"alpha_deg": alpha_deg, f"at_rest_mu_s_{MU_S:g}": [at_rest(a, MU_S) for a in alpha]}
     for mu_k in MU_K_VALUES:
         columns[f"a_mu_k_{mu_k:g}_m_s2"] = [sliding_acceleration(a, mu_k) for a in alpha]
     table = pd.DataFrame(columns)
-    csv = args.output / f"{STEM}.csv"
-    table.to_csv(csv, index=False)
 
     fig = Figure(figsize=(11, 4.4), layout="constrained")
     ax1, ax2 = fig.subplots(1, 2)
@@ -73,9 +70,7 @@ def main(argv: list[str] | None = None) -> list[Path]:
     ax2.legend(fontsize=8, loc="upper left")
     for ax in (ax1, ax2):
         ax.grid(alpha=0.3)
-    png = args.output / f"{STEM}.png"
-    fig.savefig(png, dpi=110)
-    return [png, csv]
+    return write_step(fig, table, args.output, STEM)
 
 
 if __name__ == "__main__":

@@ -18,6 +18,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
 
+from rig.teaching.script import argument_parser, write_step
 from rig.teaching.friction_table import (
     QUOTED_RANGES,
     SOURCE_TABLE,
@@ -30,8 +31,7 @@ STEM = "step03_friction_table"
 
 
 def arguments(argv: list[str] | None) -> argparse.Namespace:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-o", "--output", type=Path, default=Path("out/tutorial"), help="output folder")
+    parser = argument_parser(__doc__)
     return parser.parse_args(argv)
 
 
@@ -52,12 +52,9 @@ def table_frame() -> pd.DataFrame:
 
 def main(argv: list[str] | None = None) -> list[Path]:
     args = arguments(argv)
-    args.output.mkdir(parents=True, exist_ok=True)
     table = table_frame()
     flagged = {frozenset((c.material_1, c.material_2)) for c in contradictions()}
     table["contradiction"] = [frozenset((r.material_1, r.material_2)) in flagged for r in STATIC_TABLE]
-    csv = args.output / f"{STEM}.csv"
-    table.to_csv(csv, index=False)
 
     fig = Figure(figsize=(10, 6.5), layout="constrained")
     ax = fig.subplots()
@@ -97,9 +94,7 @@ def main(argv: list[str] | None = None) -> list[Path]:
     top = ax.secondary_xaxis("top", functions=(lambda m: np.degrees(np.arctan(m)), lambda d: np.tan(np.radians(d))))
     top.set_xlabel(r"critical inclination $\alpha^* = \arctan\mu_s$ [deg]")
     ax.grid(axis="x", alpha=0.3)
-    png = args.output / f"{STEM}.png"
-    fig.savefig(png, dpi=110)
-    return [png, csv]
+    return write_step(fig, table, args.output, STEM)
 
 
 if __name__ == "__main__":

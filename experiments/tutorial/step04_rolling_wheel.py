@@ -19,6 +19,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
 
+from rig.teaching.script import argument_parser, write_step
 from rig.teaching.coulomb import STANDARD_GRAVITY
 from rig.teaching.friction_table import static_coefficient
 from rig.teaching.rolling_wheel import Wheel, max_rolling_pull, pulled_wheel
@@ -31,14 +32,12 @@ F_V = 0.015  # tyre-road, middle of slide 36's 1-2e-2 [1]
 
 
 def arguments(argv: list[str] | None) -> argparse.Namespace:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-o", "--output", type=Path, default=Path("out/tutorial"), help="output folder")
+    parser = argument_parser(__doc__)
     return parser.parse_args(argv)
 
 
 def main(argv: list[str] | None = None) -> list[Path]:
     args = arguments(argv)
-    args.output.mkdir(parents=True, exist_ok=True)
     normal = WHEEL.mass_kg * STANDARD_GRAVITY
     f_max = max_rolling_pull(WHEEL, normal, F_V, MU_S)
     pulls = np.linspace(0.0, 1.6 * f_max, 321)
@@ -50,8 +49,6 @@ def main(argv: list[str] | None = None) -> list[Path]:
         friction_N=[m.friction_N for m in motions],
         rolls=[m.rolls for m in motions],
     ))
-    csv = args.output / f"{STEM}.csv"
-    table.to_csv(csv, index=False)
 
     fig = Figure(figsize=(11, 4.3), layout="constrained")
     ax1, ax2 = fig.subplots(1, 2)
@@ -72,9 +69,7 @@ def main(argv: list[str] | None = None) -> list[Path]:
     ax2.legend(fontsize=8, loc="upper left")
     for ax in (ax1, ax2):
         ax.grid(alpha=0.3)
-    png = args.output / f"{STEM}.png"
-    fig.savefig(png, dpi=110)
-    return [png, csv]
+    return write_step(fig, table, args.output, STEM)
 
 
 if __name__ == "__main__":

@@ -20,6 +20,7 @@ import pandas as pd
 from matplotlib.figure import Figure
 from matplotlib.patches import Circle
 
+from rig.teaching.script import argument_parser, write_step
 from rig.teaching.rolling_resistance import (
     ROLLING_COEFFICIENTS,
     coefficient_from_pull,
@@ -38,8 +39,7 @@ SEED = 20240501
 
 
 def arguments(argv: list[str] | None) -> argparse.Namespace:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-o", "--output", type=Path, default=Path("out/tutorial"), help="output folder")
+    parser = argument_parser(__doc__)
     return parser.parse_args(argv)
 
 
@@ -64,15 +64,12 @@ def sketch(ax, u_drawn: float) -> None:
 
 def main(argv: list[str] | None = None) -> list[Path]:
     args = arguments(argv)
-    args.output.mkdir(parents=True, exist_ok=True)
     rng = np.random.default_rng(np.random.SeedSequence(SEED))
     time_s = np.arange(READINGS) * 0.1
     pull = steady_pull(NORMAL_N, TRUE_F_V) + rng.normal(0.0, GAUGE_NOISE_N, READINGS)
     f_v = coefficient_from_pull(float(pull.mean()), NORMAL_N)
     u_f_v = float(pull.std(ddof=1)) / np.sqrt(READINGS) / NORMAL_N
     table = pd.DataFrame(dict(time_s=time_s, pull_N=pull))
-    csv = args.output / f"{STEM}.csv"
-    table.to_csv(csv, index=False)
 
     fig = Figure(figsize=(14, 4.3), layout="constrained")
     ax0, ax1, ax2 = fig.subplots(1, 3)
@@ -94,9 +91,7 @@ def main(argv: list[str] | None = None) -> list[Path]:
     ax2.legend(fontsize=8)
     for ax in (ax1, ax2):
         ax.grid(alpha=0.3)
-    png = args.output / f"{STEM}.png"
-    fig.savefig(png, dpi=110)
-    return [png, csv]
+    return write_step(fig, table, args.output, STEM)
 
 
 if __name__ == "__main__":

@@ -20,6 +20,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
 
+from rig.teaching.script import argument_parser, write_step
 from rig.teaching.hysteresis import KelvinVoigtLayer, cycle_work, roll_on_layer, strain_stress_loop
 from rig.teaching.rolling_resistance import ROLLING_COEFFICIENTS
 
@@ -30,14 +31,12 @@ SPEEDS_DRAWN = (0.0, 1.0, 3.0)  # [m/s]
 
 
 def arguments(argv: list[str] | None) -> argparse.Namespace:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-o", "--output", type=Path, default=Path("out/tutorial"), help="output folder")
+    parser = argument_parser(__doc__)
     return parser.parse_args(argv)
 
 
 def main(argv: list[str] | None = None) -> list[Path]:
     args = arguments(argv)
-    args.output.mkdir(parents=True, exist_ok=True)
     speeds = np.linspace(0.0, 6.0, 61)
     rows = []
     for v in speeds:
@@ -47,8 +46,6 @@ def main(argv: list[str] | None = None) -> list[Path]:
                          dissipation_J_m3=contact.dissipation_per_cycle(), power_W=contact.power_W,
                          contact_length_m=contact.front_m - contact.rear_m))
     table = pd.DataFrame(rows)
-    csv = args.output / f"{STEM}.csv"
-    table.to_csv(csv, index=False)
 
     fig = Figure(figsize=(14, 4.3), layout="constrained")
     ax1, ax2, ax3 = fig.subplots(1, 3)
@@ -81,9 +78,7 @@ def main(argv: list[str] | None = None) -> list[Path]:
     ax3.legend(fontsize=8)
     for ax in (ax1, ax2, ax3):
         ax.grid(alpha=0.3)
-    png = args.output / f"{STEM}.png"
-    fig.savefig(png, dpi=110)
-    return [png, csv]
+    return write_step(fig, table, args.output, STEM)
 
 
 if __name__ == "__main__":

@@ -25,6 +25,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Circle
 
 from rig.contact.solve import solve
+from rig.teaching.script import argument_parser, write_step
 from rig.reduction.geometry import StandAGeometry
 from rig.wheel_kinematics import AxisSides, pair_spin, ratio_for_l
 
@@ -35,8 +36,7 @@ OMEGA_1 = 25.13  # stand A wheel 1, 240 rpm [rad/s] (seed notes 3.1)
 
 
 def arguments(argv: list[str] | None) -> argparse.Namespace:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-o", "--output", type=Path, default=Path("out/tutorial"), help="output folder")
+    parser = argument_parser(__doc__)
     parser.add_argument("--n", type=int, default=16, help="cells across 2a of the kinematic model (default 16)")
     return parser.parse_args(argv)
 
@@ -51,7 +51,6 @@ def stand_a_spin() -> tuple[float, float, float]:
 
 def main(argv: list[str] | None = None) -> list[Path]:
     args = arguments(argv)
-    args.output.mkdir(parents=True, exist_ok=True)
     alphas = np.logspace(-1, 3, 13)
     rows = []
     for alpha in alphas:
@@ -61,8 +60,6 @@ def main(argv: list[str] | None = None) -> list[Path]:
     rigid = solve("rigid", shape="ellipse", b_over_a=1.0, alpha=0.0, c_over_a=0.0, l_over_a=0.0, poisson=POISSON)
     rows.append(dict(alpha_prime=0.0, nu_T=rigid.nu_T, nu_v=rigid.nu_v, nu_0=rigid.nu_0, stick_fraction=0.0))
     table = pd.DataFrame(rows)
-    csv = args.output / f"{STEM}.csv"
-    table.to_csv(csv, index=False)
 
     w01, w02, w0 = stand_a_spin()
     fig = Figure(figsize=(14, 4.6), layout="constrained")
@@ -77,7 +74,7 @@ def main(argv: list[str] | None = None) -> list[Path]:
     ax1.quiver(xs[keep], ys[keep], -ys[keep], xs[keep], color="k", angles="xy")
     ax1.plot(0.0, 0.0, "r*", ms=12, label="rolling point C = O")
     ax1.set(xlabel="x/a (material flows in +x)", ylabel="y/a (contact line)", aspect="equal",
-            title=rf"rigid slip: rotation $\omega_0$ about C" + "\n" +
+            title=r"rigid slip: rotation $\omega_0$ about C" + "\n" +
                   rf"stand A: $\omega_0$ = {w01:.1f} + {w02:.1f} = {w0:.1f} rad/s (eq. 1)")
     ax1.legend(fontsize=8, loc="lower right")
     r = solve("kinematic", shape="ellipse", b_over_a=1.0, alpha=ALPHA_MAP, c_over_a=0.0, l_over_a=0.0,
@@ -99,9 +96,7 @@ def main(argv: list[str] | None = None) -> list[Path]:
             title=f"pure spin of a Hertz circle (n = {args.n})")
     ax3.legend(fontsize=8)
     ax3.grid(alpha=0.3, which="both")
-    png = args.output / f"{STEM}.png"
-    fig.savefig(png, dpi=110)
-    return [png, csv]
+    return write_step(fig, table, args.output, STEM)
 
 
 if __name__ == "__main__":

@@ -24,6 +24,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Rectangle
 
 from rig.contact.kinematics import rigid_slip_direction
+from rig.teaching.script import argument_parser, write_step
 from rig.contact.solve import solve
 from rig.reduction.equations import alpha_prime_line_contact
 from rig.reduction.geometry import StandAGeometry
@@ -47,8 +48,7 @@ def stand_a_alpha_prime() -> float:
 
 
 def arguments(argv: list[str] | None) -> argparse.Namespace:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-o", "--output", type=Path, default=Path("out/tutorial"), help="output folder")
+    parser = argument_parser(__doc__)
     parser.add_argument("--n", type=int, default=16, help="cells across 2a of the kinematic model (default 16)")
     return parser.parse_args(argv)
 
@@ -79,11 +79,8 @@ def slip_map(ax, c: float, l: float) -> None:
 
 def main(argv: list[str] | None = None) -> list[Path]:
     args = arguments(argv)
-    args.output.mkdir(parents=True, exist_ok=True)
     alpha = stand_a_alpha_prime()
     table = sweep(alpha, args.n)
-    csv = args.output / f"{STEM}.csv"
-    table.to_csv(csv, index=False)
 
     fig = Figure(figsize=(15, 4.6), layout="constrained")
     axes = fig.subplots(1, 4, width_ratios=[1, 1, 1.5, 1.5])
@@ -99,9 +96,7 @@ def main(argv: list[str] | None = None) -> list[Path]:
         ax.set(xlabel=f"{name}/a", ylabel="[1]", title=f"C moved along {where}")
         ax.grid(alpha=0.3)
     axes[3].legend(fontsize=6, loc="center right")
-    png = args.output / f"{STEM}.png"
-    fig.savefig(png, dpi=110)
-    return [png, csv]
+    return write_step(fig, table, args.output, STEM)
 
 
 if __name__ == "__main__":

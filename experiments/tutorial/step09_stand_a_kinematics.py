@@ -23,6 +23,7 @@ import pandas as pd
 from matplotlib.figure import Figure
 
 from rig.reduction.equations import alpha_prime_line_contact, ratio_from_counts
+from rig.teaching.script import argument_parser, write_step
 from rig.reduction.geometry import StandAGeometry
 from rig.wheel_kinematics import dl_dratio, ratio_for_l, stand_a_rolling_point
 
@@ -37,8 +38,7 @@ SEED = 20240501
 
 
 def arguments(argv: list[str] | None) -> argparse.Namespace:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-o", "--output", type=Path, default=Path("out/tutorial"), help="output folder")
+    parser = argument_parser(__doc__)
     return parser.parse_args(argv)
 
 
@@ -76,10 +76,7 @@ def counting_errors(rng: np.random.Generator) -> pd.DataFrame:
 
 def main(argv: list[str] | None = None) -> list[Path]:
     args = arguments(argv)
-    args.output.mkdir(parents=True, exist_ok=True)
     table = kinematics_table()
-    csv = args.output / f"{STEM}.csv"
-    table.to_csv(csv, index=False)
     rng = np.random.default_rng(np.random.SeedSequence(SEED))
     errors = counting_errors(rng)
 
@@ -114,9 +111,7 @@ def main(argv: list[str] | None = None) -> list[Path]:
     ax3.legend(fontsize=7)
     for ax in (ax1, ax2, ax3):
         ax.grid(alpha=0.3, which="both")
-    png = args.output / f"{STEM}.png"
-    fig.savefig(png, dpi=110)
-    return [png, csv]
+    return write_step(fig, table, args.output, STEM)
 
 
 if __name__ == "__main__":

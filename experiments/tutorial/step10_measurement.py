@@ -22,6 +22,7 @@ import pandas as pd
 from matplotlib.figure import Figure
 
 from rig.logbook import point_indices, read_point
+from rig.teaching.script import argument_parser, write_step
 from rig.runner import run_scene
 from rig.scenes import load_scene
 
@@ -31,8 +32,7 @@ TEX = {"nu_T": r"$\nu_T$", "nu_v": r"$\nu_v$", "nu_0": r"$\nu_0$", "mu_v": r"$\m
 
 
 def arguments(argv: list[str] | None) -> argparse.Namespace:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-o", "--output", type=Path, default=Path("out/tutorial"), help="output folder")
+    parser = argument_parser(__doc__)
     parser.add_argument("--scene", default="default",
                         help="stand-A scene: built-in name or .toml path (default: default; fast: "
                              "experiments/tutorial/stand_a_quick.toml)")
@@ -51,7 +51,6 @@ def readings(log_path: Path) -> pd.DataFrame:
 
 def main(argv: list[str] | None = None) -> list[Path]:
     args = arguments(argv)
-    args.output.mkdir(parents=True, exist_ok=True)
     scene = load_scene(args.scene)
     run_dir = args.output / f"step10_run_{scene.name}"
     report = run_scene(scene, run_dir, progress=False)
@@ -59,8 +58,6 @@ def main(argv: list[str] | None = None) -> list[Path]:
     table = readings(run_dir / "log.h5").join(reduced, how="inner")
     columns = ["brake_setpoint_N_m", "T2_N_m", "i_k", "F_y_N", "l_over_a", "u_l_over_a", "true_l_over_a",
                "alpha_prime", "nu_T", "nu_v", "nu_0", "mu_v", "u_mu_v", "mu_T", "u_mu_T", "true_mu_v", "true_mu_T"]
-    csv = args.output / f"{STEM}.csv"
-    table[columns].to_csv(csv)
 
     fig = Figure(figsize=(15, 4.4), layout="constrained")
     ax1, ax2, ax3, ax4 = fig.subplots(1, 4)
@@ -89,9 +86,7 @@ def main(argv: list[str] | None = None) -> list[Path]:
     for ax in (ax1, ax2, ax3, ax4):
         ax.grid(alpha=0.3)
     fig.suptitle(f"scene {scene.name}: {report.in_log} points, {len(report.failures)} failed", fontsize=10)
-    png = args.output / f"{STEM}.png"
-    fig.savefig(png, dpi=110)
-    return [png, csv]
+    return write_step(fig, table[columns], args.output, STEM, index=True)
 
 
 if __name__ == "__main__":
