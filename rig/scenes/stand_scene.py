@@ -85,8 +85,10 @@ def parse_parameters(table: Mapping[str, object], specs: Mapping[str, object]) -
     }
 
 
-def parse_effects(table: Mapping[str, object], specs: Mapping[str, object]) -> dict[str, dict[str, float]]:
-    """``[effects.<name>]``: the effects to build, each with its parameters (unnamed ones: defaults)."""
+def parse_effects(table: Mapping[str, object], stand_class: type[Stand]) -> dict[str, dict[str, float]]:
+    """``[effects.<name>]``: the effects to build, each with its parameters (unnamed ones: defaults),
+    checked against the stand's ranges (Stand.resolve_effects) when the scene is read."""
+    specs = stand_class.EFFECTS
     effects = {}
     validate.known_keys("effect", table, specs)
     for name, given in table.items():
@@ -99,6 +101,7 @@ def parse_effects(table: Mapping[str, object], specs: Mapping[str, object]) -> d
         for parameter, (default, unit) in spec.parameters.items():
             value = given.get(parameter, default)
             effects[name][parameter] = _keep_int(value, T.number(T.dotted(where, parameter), value, None, None, unit))
+    stand_class.resolve_effects(effects)
     return effects
 
 
@@ -137,7 +140,7 @@ def parse_stand_scene(document: Mapping[str, object], *, name: str, source: str,
         drive=drive,
         parameters=parse_parameters(T.sub_table(document, "parameters", "", required=False) or {},
                                     stand_class.PARAMETERS),
-        effects=parse_effects(T.sub_table(document, "effects", "", required=False) or {}, stand_class.EFFECTS),
+        effects=parse_effects(T.sub_table(document, "effects", "", required=False) or {}, stand_class),
         contact=parse_contact(T.sub_table(document, "contact", "", required=True)),
         procedure=parse_procedure(T.sub_table(document, "procedure", "", required=True), stand_class.SETTINGS),
         outputs=parse_outputs(T.sub_table(document, "outputs", "", required=False)),

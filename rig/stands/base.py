@@ -180,6 +180,12 @@ class Stand(ABC):
     SETTINGS: ClassVar[Mapping[str, SettingSpec]]
     LOG_SCHEMA: ClassVar[LogSchema]
 
+    @classmethod
+    @abstractmethod
+    def resolve_effects(cls, effects: Mapping[str, Mapping[str, float]]) -> dict[str, dict[str, float]]:
+        """The named effects with every parameter filled in (EffectSpec defaults) and range-checked
+        (named errors). The scene loader calls it, so a bad value fails when the scene is read."""
+
     @abstractmethod
     def calibrate(self, seed: int) -> Mapping[str, object]:
         """Run the instruments' calibration procedures once per run (weights, levers) and keep

@@ -115,9 +115,18 @@ class FakeStand(Stand):
     LOG_SCHEMA = LogSchema(channels={"force": "N"}, settings={"load": "N", "speed": "rad/s"},
                            readings={"F_mean": "N", "F_std": "N"}, counters=("N1",))
 
+    @classmethod
+    def resolve_effects(cls, effects):
+        """Fills nothing in (the scene loader already did) and checks only that values are >= 0."""
+        validate.known_keys("effect", effects, cls.EFFECTS)
+        for name, values in effects.items():
+            for key, value in values.items():
+                validate.number(f"effects.{name}.{key}", value, 0.0)
+        return {name: dict(values) for name, values in effects.items()}
+
     def __init__(self, parameters, effects, contact, drive) -> None:
         validate.known_keys("parameter", parameters, self.PARAMETERS)
-        validate.known_keys("effect", effects, self.EFFECTS)
+        effects = self.resolve_effects(effects)
         self.parameters = {name: spec.default for name, spec in self.PARAMETERS.items()} | dict(parameters)
         self.contact, self.drive = contact, drive
         self.components = {name: COMPONENTS[name](**values) for name, values in effects.items()}

@@ -134,3 +134,13 @@ def test_characteristics_variants_run_the_kinematic_model_with_their_effects(tmp
     assert sorted(set(zip(table["model"], table["variant"]))) == [("kinematic", "psi = 2"), ("rigid", "")]
     with pytest.raises(UnknownNameError, match="did you mean 'psi'"):
         parse_scene(document.replace("psi = 2.0", "pzi = 2.0"), name="bad")
+
+
+def test_an_effect_parameter_out_of_range_fails_when_the_scene_is_read(monkeypatch):
+    """Range checks of effect parameters run at load, not only when the stand is built."""
+    monkeypatch.delenv(ENV_VAR, raising=False)
+    text = load_scene("fig10").text
+    bad = text.replace("[effects.brake_dynamics]", "[effects.brake_dynamics]\nloop_gain = -5.0", 1)
+    assert bad != text
+    with pytest.raises(ParameterError, match="loop_gain"):
+        parse_scene(bad, name="bad")

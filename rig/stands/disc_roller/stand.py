@@ -49,12 +49,16 @@ class DiscRollerStand(Stand):
     )
     SHAPE: ClassVar[str] = "line"
 
+    @classmethod
+    def resolve_effects(cls, effects: Mapping[str, Mapping[str, float]] | None) -> dict[str, dict[str, float]]:
+        return P.resolve_effects(effects)
+
     def __init__(
         self, parameters: Mapping[str, float] | None, effects: Mapping[str, Mapping[str, float]] | None,
         contact: ContactSpec, drive: DriveMode, *, law_factory: LawFactory | None = None,
     ) -> None:
         self.params = P.resolve_parameters(parameters)
-        self.effects = P.resolve_effects(effects)
+        self.effects = self.resolve_effects(effects)
         if not isinstance(contact, ContactSpec):
             raise ParameterError("contact", contact, "a rig.stands.base.ContactSpec")
         if not isinstance(drive, DriveMode):

@@ -46,14 +46,18 @@ class YokeStand(Stand):
         counters=instruments.CHANNELS,
     )
 
+    @classmethod
+    def resolve_effects(cls, effects: Mapping[str, Mapping[str, float]]) -> dict[str, dict[str, float]]:
+        validate.known_keys("stand A effect", effects, spec.EFFECTS)
+        return {name: spec.effect_values(name, given) for name, given in effects.items()}
+
     def __init__(self, parameters: Mapping[str, float], effects: Mapping[str, Mapping[str, float]],
                  contact: ContactSpec, drive: DriveMode, *, law_factory: laws.LawFactory | None = None) -> None:
         self.params = spec.resolve(parameters)
         self.law = laws.LawCache(contact, self.params.mu, law_factory)  # law(b_over_a, geometry) -> (law, domain)
         if not isinstance(drive, DriveMode):
             raise ParameterError("drive", drive, "one of " + ", ".join(f"DriveMode.{m.name}" for m in DriveMode))
-        validate.known_keys("stand A effect", effects, spec.EFFECTS)
-        self.effects = {name: spec.effect_values(name, given) for name, given in effects.items()}
+        self.effects = self.resolve_effects(effects)
         self._check_effects(drive)
         self.contact_spec = contact
         self.drive = drive
