@@ -44,6 +44,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rig import validate
+from rig.contact.surrogate import TableDomain
 from rig.reduction.equations import alpha_prime_line_contact
 from rig.reduction.geometry import StandAGeometry
 from rig.wheel_kinematics import centroid_moments, rolling_point
@@ -52,24 +53,6 @@ Law = Callable[[np.ndarray, np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarra
 """law(l_over_a, c_over_a, alpha) -> (nu_T, nu_v, nu_0), vectorised (rig.stands.contact_law)."""
 
 TINY = 1e-300
-
-
-@dataclass(frozen=True)
-class ContactDomain:
-    """Where the law is evaluated: (lo, hi) of l/a, c/a and alpha' [1] (lo < hi, alpha lo > 0)."""
-
-    l_over_a: tuple[float, float]
-    c_over_a: tuple[float, float]
-    alpha: tuple[float, float]
-
-    def __post_init__(self) -> None:
-        for name in ("l_over_a", "c_over_a", "alpha"):
-            lo, hi = getattr(self, name)
-            validate.number(f"domain.{name}[0]", lo, lo=0.0 if name == "alpha" else None,
-                            lo_open=name == "alpha")
-            validate.number(f"domain.{name}[1]", hi, lo, lo_open=True)
-        if not self.l_over_a[0] <= 0.0 <= self.l_over_a[1]:
-            validate.number("domain.l_over_a", 0.0, *self.l_over_a)
 
 
 @dataclass(frozen=True, eq=False)
@@ -100,11 +83,11 @@ class StandAContact:
     """The contact of one operating point: geometry (with its Delta h), F_N, b/a, mu, law, domain.
 
     geometry: StandAGeometry [m, rad]; normal_force F_N [N]; b_over_a [1]; mu [1]; law: see
-    :data:`Law`; domain: ContactDomain of the law; slip_speed_eps: regularisation speed [m/s].
+    :data:`Law`; domain: TableDomain of the law; slip_speed_eps: regularisation speed [m/s].
     """
 
     def __init__(self, geometry: StandAGeometry, normal_force: float, b_over_a: float, mu: float, law: Law,
-                 domain: ContactDomain, slip_speed_eps: float) -> None:
+                 domain: TableDomain, slip_speed_eps: float) -> None:
         self.geometry = geometry
         self.normal_force = validate.number("normal_force_N", normal_force, 0.0, lo_open=True)
         self.b_over_a = validate.number("b_over_a", b_over_a, 0.0, lo_open=True)

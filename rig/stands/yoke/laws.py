@@ -18,17 +18,18 @@ from rig.errors import ParameterError
 from rig.reduction.equations import alpha_prime_line_contact
 from rig.reduction.geometry import StandAGeometry
 from rig.stands.base import ContactSpec
-from rig.stands.yoke.contact_forces import ContactDomain, Law
+from rig.contact.surrogate import TableDomain
+from rig.stands.yoke.contact_forces import Law
 
 L_MAX = 2.5  # [1]
 C_MIN = 0.9  # [1]
 MU_MIN, MU_MAX = 0.1, 1.2  # a-priori range of friction coefficients of the pair [1] (assumed)
 SHAPE = "line"  # stand A: line contact (seed 000 3.1: "Linear contact was applied")
 
-LawFactory = Callable[[ContactSpec, str, float, ContactDomain], Law]
+LawFactory = Callable[[ContactSpec, str, float, TableDomain], Law]
 
 
-def domain(geometry: StandAGeometry, b_over_a: float, mu: float) -> ContactDomain:
+def domain(geometry: StandAGeometry, b_over_a: float, mu: float) -> TableDomain:
     """The law's domain for a geometry [m, rad] (its Delta h), b/a [1] and the simulated mu [1]."""
     if not MU_MIN <= mu <= MU_MAX:
         raise ParameterError("mu", mu, f"[{MU_MIN:g}, {MU_MAX:g}] (the a-priori range of the contact-law tables)")
@@ -42,7 +43,7 @@ def domain(geometry: StandAGeometry, b_over_a: float, mu: float) -> ContactDomai
     l_hi = min(L_MAX * g.a, g.l1)
     lo = alpha_prime_line_contact(MU_MIN, b_over_a, v_over_spin(l_lo), g.radius_x)
     hi = alpha_prime_line_contact(MU_MAX, b_over_a, v_over_spin(l_hi), g.radius_x)
-    return ContactDomain((-L_MAX, L_MAX), (0.0, max(C_MIN, g.delta_h / g.a)), (lo, hi))
+    return TableDomain((-L_MAX, L_MAX), (0.0, max(C_MIN, g.delta_h / g.a)), (lo, hi))
 
 
 def default_factory() -> LawFactory:
@@ -65,9 +66,9 @@ class LawCache:
         self.spec = spec
         self.mu = mu
         self.factory = factory
-        self._laws: dict[tuple[float, ContactDomain], Law] = {}
+        self._laws: dict[tuple[float, TableDomain], Law] = {}
 
-    def __call__(self, b_over_a: float, geometry: StandAGeometry) -> tuple[Law, ContactDomain]:
+    def __call__(self, b_over_a: float, geometry: StandAGeometry) -> tuple[Law, TableDomain]:
         """The law for b/a [1] and a geometry [m, rad] (its Delta h), with its domain."""
         where = domain(geometry, b_over_a, self.mu)
         key = (b_over_a, where)

@@ -39,18 +39,19 @@ from rig.reduction.geometry import StandAGeometry
 from rig.reduction.iteration import ReductionSettings
 from rig.reduction.readings import ForceCalibration, Measured, converter_mean, scale_mean
 from rig.reduction.table import TRUTH_COLUMNS, column_output, reduced_table
-from rig.stands.yoke.contact_forces import ContactDomain, Law
+from rig.contact.surrogate import TableDomain
+from rig.stands.yoke.contact_forces import Law
 from rig.stands.yoke.instruments import BALANCE, CHANNELS, DYNAMOMETER
 from rig.stands.yoke.parameters import YokeParameters
 
 UNITS = {"omega_1_rad_s": "rad/s", "spin_rad_s": "rad/s", "l_m": "m", "c_m": "m", "D_m": "m", "F_y_N": "N"}
 """Units of the dimensional outputs of rig.reduction.stand_a (and their u_, U95_ columns); the rest are "1"."""
 
-LawFor = Callable[[float, StandAGeometry], tuple[Law, ContactDomain]]
+LawFor = Callable[[float, StandAGeometry], tuple[Law, TableDomain]]
 """law_for(b_over_a, geometry) -> (law, its domain)."""
 
 
-def coefficients(law: Law, domain: ContactDomain) -> stand_a.Coefficients:
+def coefficients(law: Law, domain: TableDomain) -> stand_a.Coefficients:
     """The reduction's scalar coefficients(l/a, c/a, alpha') from a stand law; raises
     OutsideModelDomain (naming the coordinate and the domain) outside the law's domain."""
 

@@ -11,7 +11,7 @@ from rig.errors import ParameterError
 from rig.logbook import LogWriter, RunMetadata, read_point, read_reduced, utc_timestamp, write_reduced
 from rig.reduction.coefficients import OutsideModelDomain
 from rig.stands.base import ContactSpec, DriveMode
-from rig.stands.yoke.contact_forces import ContactDomain
+from rig.contact.surrogate import TableDomain
 from rig.stands.yoke.reduction import coefficients, point_readings
 from tests.stands.yoke import helpers, standin
 
@@ -51,7 +51,7 @@ def test_readings_come_from_the_record(logged):
 
 def test_coefficients_outside_the_domain_say_why():
     """The reduction turns this error into NaN with the reason (rig.reduction.coefficients)."""
-    f = coefficients(standin.coefficients, ContactDomain((-1.0, 1.0), (0.0, 0.5), (0.1, 2.0)))
+    f = coefficients(standin.coefficients, TableDomain((-1.0, 1.0), (0.0, 0.5), (0.1, 2.0)))
     assert all(math.isfinite(x) for x in f(0.2, 0.1, 0.5))
     with pytest.raises(OutsideModelDomain, match="l/a = 1.2"):
         f(1.2, 0.1, 0.5)
