@@ -136,3 +136,14 @@ def test_swinging_drive_settles_periodically():
 def test_swinging_drive_has_no_quasi_static_form():
     with pytest.raises(ParameterError, match="swinging"):
         make_stand({"swinging_drive": {}, "contact_relaxation": {}}, drive=DriveMode.QUASI_STATIC)
+
+
+@pytest.mark.parametrize(
+    "parameter, value",
+    [("amplitude_rad", -0.1), ("amplitude_rad", math.radians(120.0)), ("frequency_Hz", 0.0),
+     ("frequency_Hz", -1.0), ("frequency_Hz", 50.0), ("amplitude_rad", math.nan)],
+)
+def test_invalid_swinging_amplitudes_and_frequencies_are_named_errors(parameter, value):
+    """Issue 6, acceptance 4: the swinging drive's amplitude and frequency are range-checked."""
+    with pytest.raises(ParameterError, match=parameter):
+        make_stand({"swinging_drive": {parameter: value}, "contact_relaxation": {}})
