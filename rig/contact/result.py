@@ -1,6 +1,6 @@
 """The one result type every contact model returns.
 
-Sign convention (docs/conventions.md): x = rolling direction (material passes the contact in +x),
+Sign convention (docs/contact-model.md, "Conventions"): x = rolling direction (material passes the contact in +x),
 y = along the contact line, z = common normal; body 1 is the driving element. The rigid slip of
 body 1 relative to body 2 is a rotation with spin w0 about the rolling point C = (c, l),
 s_g(x, y) = w0 * (-(y - l), x - c); the traction on body 1 opposes the slip. With w0 > 0 this gives
