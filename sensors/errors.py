@@ -1,25 +1,19 @@
-"""Exceptions raised by the instrument package ``sensors``.
+"""The instrument package's error type.
 
-``sensors`` is a stand-alone package beside ``rig`` and does not import it, so it carries its own
-small error type. :class:`InstrumentParameterError` is a :class:`ValueError` whose message names
-the parameter, the value given and the valid range, like ``rig.errors.ParameterError``.
+``sensors`` does not import ``rig``; both share the error types of :mod:`paramcheck`.
+:class:`InstrumentParameterError` is the :class:`~paramcheck.errors.ParameterError` an instrument
+raises: a :class:`ValueError` whose message names the parameter, the value given and the valid
+range.
 """
 
 from __future__ import annotations
 
+from paramcheck.errors import ParameterError
 
-class InstrumentParameterError(ValueError):
+
+class InstrumentParameterError(ParameterError):
     """An instrument parameter or input is outside its valid range.
 
     Attributes ``name`` (the parameter), ``value`` (what was given) and ``valid`` (the valid
     range, in words) are kept for callers that want to re-raise with more context.
     """
-
-    def __init__(self, name: str, value: object, valid: str, *, hint: str = "") -> None:
-        self.name = name
-        self.value = value
-        self.valid = valid
-        message = f"{name} = {value!r} is not valid; valid: {valid}"
-        if hint:
-            message += f" ({hint})"
-        super().__init__(message)

@@ -8,7 +8,7 @@ from rig.scenes import builtin_scenes
 def add_parser(subparsers) -> None:
     """Register ``rig scenes``."""
     parser = subparsers.add_parser("scenes", help="list the built-in scenes, one line each",
-                                   description="List the built-in scenes (experiments/scenes/, or $RIG_SCENES_DIR).")
+                                   description="List the built-in scenes (shipped in rig/scenes/builtin/, or $RIG_SCENES_DIR).")
     parser.set_defaults(handler=main)
 
 

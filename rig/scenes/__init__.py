@@ -6,7 +6,7 @@ settle timeout, gate time, repeats), the seed and the outputs - or, with ``kind 
 "contact_characteristics"``, a sweep of the contact model alone. Scenes are validated on load:
 unknown keys and names raise rig.errors.UnknownNameError with a suggestion, out-of-range values
 raise rig.errors.ParameterError naming the key and its range, and missing physical input is an
-error. Built-in scenes live in ``experiments/scenes/`` of the source tree (rig.scenes.locate).
+error. Built-in scenes ship with the package, in ``rig/scenes/builtin/`` (rig.scenes.locate).
 """
 
 from __future__ import annotations

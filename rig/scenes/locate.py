@@ -1,8 +1,8 @@
-"""Where the built-in scenes are: ``experiments/scenes/*.toml`` of the source tree.
+"""Where the built-in scenes are: ``rig/scenes/builtin/*.toml``, shipped as package data.
 
-rig never imports ``experiments``: the folder is found by path, two levels above the installed
-``rig`` package (an editable install or a checkout), or taken from the environment variable
-``RIG_SCENES_DIR`` when it is set. A missing folder is a clear error that says both.
+An ordinary (non-editable) install carries them, so ``rig run`` works from any folder. The
+environment variable ``RIG_SCENES_DIR`` replaces the folder when it is set (a missing folder is
+a clear error that names the variable).
 """
 
 from __future__ import annotations
@@ -12,11 +12,11 @@ import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
-import rig
 from rig import validate
 from rig.errors import ParameterError
 
 ENV_VAR = "RIG_SCENES_DIR"
+BUILTIN_DIR = Path(__file__).resolve().parent / "builtin"  # package data (pyproject.toml)
 SUFFIX = ".toml"
 
 
@@ -30,20 +30,14 @@ class BuiltinScene:
 
 
 def scenes_dir() -> Path:
-    """The built-in scenes folder (``$RIG_SCENES_DIR`` or ``<source tree>/experiments/scenes``)."""
+    """The built-in scenes folder (``$RIG_SCENES_DIR`` or the package's ``rig/scenes/builtin``)."""
     override = os.environ.get(ENV_VAR)
     if override:
         folder = Path(override)
         if not folder.is_dir():
             raise ParameterError(ENV_VAR, override, "an existing folder of scene files (*.toml)")
         return folder
-    folder = Path(rig.__file__).resolve().parent.parent / "experiments" / "scenes"
-    if not folder.is_dir():
-        raise ParameterError(
-            "built-in scenes folder", str(folder), "an existing folder",
-            hint=f"friction-rig is not running from its source tree; set {ENV_VAR} or give a scene file path",
-        )
-    return folder
+    return BUILTIN_DIR
 
 
 def _description(path: Path) -> str:

@@ -13,10 +13,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-pytest.importorskip("rig.stands.yoke.stand", reason="stand A is not in the package yet")
-
-from rig.runner import run_scene  # noqa: E402
-from rig.scenes import load_scene, parse_scene  # noqa: E402
+from rig.runner import run_scene
+from rig.scenes import load_scene, parse_scene
 
 QUICK = {
     'model = "kinematic"': 'model = "fastsim"',

@@ -1,9 +1,8 @@
-"""Built-in scenes: found by path (never by importing experiments), RIG_SCENES_DIR, names, paths;
-the shipped scenes validate; the characteristics scene kind."""
+"""Built-in scenes: shipped as package data (never by importing experiments), RIG_SCENES_DIR, names,
+paths; the shipped scenes validate; the characteristics scene kind."""
 
 from __future__ import annotations
 
-import importlib.util
 import sys
 from pathlib import Path
 
@@ -16,7 +15,7 @@ from rig.scenes import CharacteristicsScene, builtin_scenes, load_scene, parse_s
 from rig.scenes.locate import ENV_VAR
 from tests.runner.fake_stand import register, scene_text
 
-SOURCE_SCENES = Path(rig.__file__).resolve().parent.parent / "experiments" / "scenes"
+SOURCE_SCENES = Path(rig.__file__).resolve().parent / "scenes" / "builtin"
 TINY_CHARACTERISTICS = """\
 # Tiny characteristics scene for tests: the rigid model only.
 [scene]
@@ -46,7 +45,7 @@ def scene_folder(tmp_path, monkeypatch):
     return tmp_path
 
 
-def test_default_folder_is_the_source_trees_experiments_scenes(monkeypatch):
+def test_default_folder_is_the_packages_builtin_scenes(monkeypatch):
     monkeypatch.delenv(ENV_VAR, raising=False)
     assert scenes_dir() == SOURCE_SCENES
     assert {"contact_characteristics", "default"} <= {s.name for s in builtin_scenes()}
@@ -112,15 +111,13 @@ def _doc_examples() -> list[str]:
     return [block.split("```", 1)[0] for block in text.split("```toml\n")[1:]]
 
 
-REPO_DOCS = SOURCE_SCENES.parent.parent / "docs"
+REPO_DOCS = Path(__file__).resolve().parents[2] / "docs"
 
 
 def test_the_annotated_examples_of_docs_scenes_md_validate():
     stand_example, characteristics_example = _doc_examples()
     scene = parse_scene(characteristics_example, name="doc")
     assert isinstance(scene, CharacteristicsScene) and len(scene.alphas) == 25
-    if importlib.util.find_spec("rig.stands.yoke.stand") is None:
-        pytest.skip("stand A (rig.stands.yoke.stand) is not in the package yet")
     scene = parse_scene(stand_example, name="doc")
     assert scene.stand == "yoke" and scene.procedure.n_points == 8
     assert scene.contact.effects == {"psi": 1.2} and scene.effects["dynamometer_noise"] == {"std_V": 2e-6}
