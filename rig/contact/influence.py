@@ -81,6 +81,7 @@ class InfluenceOperator:
     self_term: np.ndarray  # (2,) xx, yy
     upstream_term: np.ndarray  # (2,) xx, yy
     workers: int  # FFT threads: 1 for small grids, where threading costs more than it saves
+    poisson: float  # Poisson's ratio of the kernels [1]
 
     def _convolve(self, field: np.ndarray, symbol: np.ndarray) -> np.ndarray:
         mx, my = self.grid_shape
@@ -123,7 +124,7 @@ def _operator(mx: int, my: int, hx: float, hy: float, poisson: float) -> Influen
     k1 = cell_kernels(np.array(-hx), np.array(0.0), hx, hy, poisson)
     workers = 1 if px * py < 2**16 else -1
     return InfluenceOperator(
-        (mx, my), (px, py), kernels_hat, inverse_hat, riesz_hat, np.array([k0[0], k0[2]]), np.array([k1[0], k1[2]]), workers
+        (mx, my), (px, py), kernels_hat, inverse_hat, riesz_hat, np.array([k0[0], k0[2]]), np.array([k1[0], k1[2]]), workers, poisson
     )
 
 

@@ -27,6 +27,9 @@ from rig.errors import ParameterError
 
 MODELS = ("rigid", "linear", "fastsim", "kinematic")
 DEFAULT_N = 32
+# Revision of the grid models' discretisation; part of every surrogate table's cache key.
+# 2: rim cells, second-order transport, grid-independent plastic slip (docs/contact-model.md).
+DISCRETISATION_REVISION = 2
 N_RANGE = (4, 512)
 # Effects each model can represent; the others would be silently meaningless, so they are errors.
 MODEL_EFFECTS = {

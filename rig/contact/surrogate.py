@@ -42,7 +42,7 @@ from rig.contact.effects import EFFECT_KEYWORDS
 from rig.contact.grid import SHAPES, make_grid
 from rig.contact.kalker import B_OVER_A_RANGE
 from rig.contact.models import rigid
-from rig.contact.solve import DEFAULT_N, MODEL_EFFECTS, MODELS, N_RANGE, solve
+from rig.contact.solve import DEFAULT_N, DISCRETISATION_REVISION, MODEL_EFFECTS, MODELS, N_RANGE, solve
 from rig.contact.tensor_spline import MIN_NODES, TensorSpline
 from rig.errors import ConvergenceError, ParameterError
 
@@ -110,10 +110,12 @@ class TableInputs:
         return alpha
 
     def description(self) -> dict:
-        """JSON-ready description of every input, with the package and table format versions."""
+        """JSON-ready description of every input, with the package, table format and grid-model
+        (discretisation) revisions: a table built by another solver is never reused."""
         d = self.domain
         return dict(
-            table_format=TABLE_FORMAT, package_version=rig.__version__, model=self.model, shape=self.shape,
+            table_format=TABLE_FORMAT, package_version=rig.__version__, model=self.model,
+            discretisation=DISCRETISATION_REVISION, shape=self.shape,
             b_over_a=self.b_over_a, poisson=self.poisson, n=self.n, effects=[list(e) for e in self.effects],
             l_over_a=list(d.l_over_a), c_over_a=list(d.c_over_a), alpha=list(d.alpha), points=list(self.points),
         )

@@ -6,13 +6,14 @@ displacement field is carried with the actual motion of the material: in a step 
 rolls the signed distance d (units of a) through the contact, so the point now at x was at
 x - d, and the slip *displacement* of the step is
 
-    sigma = Delta s_g + [U + (Psi - 1) K_self q]^k (x) - [U + (Psi - 1) K_self q]^(k-1) (x - d)
+    sigma = Delta s_g + U^k (x) - U^(k-1) (x - d) + (Psi - 1) v_el |d| q^k
 
-with the same Coulomb law as the steady model (q opposes sigma where it slips, |q| <= r). Coulomb
-friction is rate independent, so only distances enter: standstill is d = 0, reversal is d < 0
-(the material then arrives from the x > b side). With d equal to the cell length the steady
-solution is an exact fixed point of the step, so at constant rolling the transient solution
-converges to the steady model's (tests/contact/test_transient.py). Each step is a static
+with the same Coulomb law as the steady model (q opposes sigma where it slips, |q| <= r); the last
+term is the plastic self slip of eq. (25) over the distance rolled (rig.contact.effects.plastic_slip).
+Coulomb friction is rate independent, so only distances enter: standstill is d = 0, reversal is
+d < 0 (the material then arrives from the x > b side). The step carries the displacement by linear
+interpolation, a first-order transport: at constant rolling the transient solution converges to
+the steady model's as the grid is refined (tests/contact/test_transient.py). Each step is a static
 frictional problem with the influence operator K itself (no upwind difference), solved with the
 same semi-smooth Newton-Krylov solver.
 
@@ -166,10 +167,8 @@ class _Stepper:
         self.grid = grid
         self.op = influence_operator(grid, poisson)
         self.disc = Discretisation(grid, self.op, effects)
-        self.psi = self.disc.psi
         self.static = effects.static_friction
-        self.k_self = self.op.self_term[:, None]
-        self.rho = 1.0 / (self.psi * self.op.self_term[0])
+        self.rho = 1.0 / self.op.self_term[0]
         self.precond = _Preconditioner(self.disc, self.rho, upwind=False)
         self.x, self.y = grid.centres()
         self.p = grid.gather(grid.p)
@@ -178,11 +177,8 @@ class _Stepper:
         self.frictional_work = frictional_work
 
     def carried(self, t: np.ndarray) -> np.ndarray:
-        """U + (Psi - 1) K_self q on the full rectangle (2, cells) for tractions t at the cells."""
-        u = self.disc.displacement(t)
-        if self.psi != 1.0:
-            u = u + (self.psi - 1.0) * self.k_self * self.grid.scatter(t).reshape(2, -1)
-        return u
+        """The elastic displacement U on the full rectangle (2, cells) for tractions t at the cells."""
+        return self.disc.displacement(t)
 
     def shifted(self, full: np.ndarray, d: float) -> np.ndarray:
         """full (..., cells) sampled at x - d for each active cell (linear interpolation, |d| <= hx)."""
@@ -209,13 +205,15 @@ class _Stepper:
             else:
                 r = self.static.bound(self.p, self.shifted(stuck, d) >= 0.5)
 
-            def apply(v):
-                return v, self.carried(v)[:, self.index]
+            plastic = self.disc.plastic_rate * abs(d)  # eq. (25): plastic slip per distance rolled
+
+            def apply(v, plastic=plastic):
+                return v, self.carried(v)[:, self.index] + plastic * v
 
             t, its, _ = _newton(apply, s0, self.precond, r, self.rho, t)
             newton_total += its
             now = self.carried(t)
-            sigma = s0 + now[:, self.index]
+            sigma = s0 + now[:, self.index] + plastic * t
             stick = np.hypot(t[0], t[1]) < r * (1.0 - 1e-9)
             carried = now
             stuck = np.ones(grid.p.size)

@@ -3,14 +3,15 @@
 Discrete steady rolling (seed notes 1.5, 1.9), dimensionless (lengths in a, traction in mu p0,
 displacement in mu p0 a/G, slip in mu p0 v/G, G = Kalker's combined shear modulus):
 
-    s_c = s_g,c + (U_c - U_up(c)) / hx                          eqs. (8), (10), (13)
-    U   = K t + (Psi - 1) K_self q    (plastic part: local)      eqs. (6), (25)
+    s_c = s_g,c + (U_c - U_up(c)) / hx + s_pl,c                 eqs. (8), (10), (13)
+    U   = K t,   s_pl = (Psi - 1) v_el q / (mu p)   (local)      eqs. (6), (20), (25)
     q   = t + Gamma Lambda^-1 D2 U    (surface inertia)          eq. (15), model choice
     |q_c| <= r_c, and q_c = -r_c s_c/|s_c| where s_c != 0      eqs. (13), (14)
 
 t is the traction the half-space feels (q = t without inertia). The paper's law (14),
 q = -mu p w/max(|w|, v0), is exactly this Coulomb condition once the element's own slip
-v0 = Psi v_el (eqs. 20, 25) is split off the total slip; solving the coupled problem for every
+v0 = Psi v_el (eqs. 20, 25) is split off the total slip (the plastic part (Psi - 1) v_el is a
+slip velocity with no grid length in it, rig.contact.effects.plastic_slip); solving the coupled problem for every
 element at once *is* the kinematic law. The element-by-element marching that the paper
 advertises ("no iterative steps") diverges under grid refinement (seed notes 1.9 step 6;
 tests/contact/test_marching_diverges.py shows it), so it is not offered.
@@ -41,6 +42,8 @@ from rig.contact.kinematics import Creepage
 from rig.contact.models import fastsim
 from rig.errors import ConvergenceError
 
+# dU/dx at a cell from the cell and the cell upstream (Kalker's backward difference, eqs. 8, 10)
+TRANSPORT = (1.0, -1.0)
 NEWTON_TOL = 1e-9  # max |F| relative to the largest traction bound (tractions are O(1) in mu p0)
 MAX_NEWTON = 50
 MAX_MEMORY_PASSES = 50
@@ -73,11 +76,11 @@ class Discretisation:
         self.grid = grid
         self.op = op
         self.idx = grid.index
-        self.up = self.idx - grid.ny  # one cell upstream (inside the rectangle: ghost columns)
+        # the cells upstream that TRANSPORT uses (inside the rectangle: GHOST_COLUMNS)
+        self.upstream = tuple(self.idx - k * grid.ny for k in range(1, len(TRANSPORT)))
         self.plastic = effects.plastic_slip
         self.inertia = effects.surface_inertia
-        self.psi = 1.0 if self.plastic is None else self.plastic.psi
-        self.k_self = op.self_term[:, None]
+        self.plastic_rate = 0.0 if self.plastic is None else self.plastic.rate(op.poisson)
 
     def displacement(self, t: np.ndarray) -> np.ndarray:
         """Half-space displacement on the full rectangle, flattened to (2, cells)."""
@@ -95,33 +98,56 @@ class Discretisation:
         return q, self.elastic_slip(q, u)
 
     def elastic_slip(self, q: np.ndarray, u_full: np.ndarray) -> np.ndarray:
-        """(U_c - U_up)/hx of the displacement a material point carries (eqs. 8, 10)."""
-        du = u_full[:, self.idx] - u_full[:, self.up]
+        """dU/dx of the displacement a material point carries (eqs. 8, 10), by the backward
+        difference TRANSPORT, plus the plastic self slip of eq. (25) when it is on."""
+        du = TRANSPORT[0] * u_full[:, self.idx]
+        for weight, up in zip(TRANSPORT[1:], self.upstream):
+            du += weight * u_full[:, up]
+        slip = du / self.grid.hx
         if self.plastic is not None:
-            du = du + self.plastic.carried_displacement_step(q, self.k_self, self.idx, self.up, self.grid)
-        return du / self.grid.hx
+            slip += self.plastic.slip(q, self.op.poisson)
+        return slip
+
+    def slip_scale(self) -> float:
+        """rho: the inverse of ds_c/dt_c, the slip of a cell per unit of its own traction [1]."""
+        k0, k1 = self.op.self_term[0], self.op.upstream_term[0]
+        return 1.0 / (TRANSPORT[0] * (k0 - k1) / self.grid.hx + self.plastic_rate)
 
 
 class _Preconditioner:
     """M^-1 = Kc^-1 o L^-1: L is the Jacobian with K replaced by K_self, which only couples a
-    cell to its upstream neighbour (solved exactly, sparse LU), and Kc^-1 the circulant inverse
+    cell to its upstream neighbours (solved exactly, sparse LU), and Kc^-1 the circulant inverse
     of the influence operator restricted to the contact (Vollebregt's FFT preconditioner idea)."""
 
     def __init__(self, disc: Discretisation, rho: float, *, upwind: bool = True) -> None:
-        """upwind: the steady law couples a cell to its upstream neighbour (U_c - U_up); the
+        """upwind: the steady law couples a cell to its upstream neighbours (TRANSPORT); the
         transient law of one rolling step does not (the carried displacement is known)."""
         grid = disc.grid
         n = disc.idx.size
-        position = -np.ones(grid.p.size, dtype=int)
-        position[disc.idx] = np.arange(n)
-        upstream = position[disc.up] if upwind else -np.ones(n, dtype=int)
         self.n = n
         self.disc = disc
-        self.has_up = np.flatnonzero(upstream >= 0)
-        self.up_pos = upstream[self.has_up]
         k0 = disc.op.self_term[0]
         self.radial = 1.0 / k0
-        self.tangential = disc.psi * rho / (grid.hx if upwind else 1.0)
+        # L in the displacement-like unknown w = K_self t: slip = rho (D w + plastic rate w / k0)
+        self.links = []
+        if upwind:
+            position = -np.ones(grid.p.size, dtype=int)
+            position[disc.idx] = np.arange(n)
+            for up, weight in zip(disc.upstream, TRANSPORT[1:]):
+                upstream = position[up]
+                has = np.flatnonzero(upstream >= 0)
+                self.links.append((has, upstream[has], rho * weight / grid.hx))
+            self.tangential = rho * (TRANSPORT[0] / grid.hx + disc.plastic_rate / k0)
+        else:
+            self.tangential = rho
+        # unknowns ordered line by line along the rolling direction (row j, then column i, then
+        # component): L only couples a cell to cells upstream in its own line, so the LU factor
+        # of the permuted matrix is block-banded and costs O(N), not O(N n)
+        column, row = np.divmod(disc.idx, grid.ny)
+        rank = np.empty(n, dtype=int)
+        rank[np.lexsort((column, row))] = np.arange(n)
+        self.permutation = np.concatenate([2 * rank, 2 * rank + 1])  # (component, cell) -> line order
+        self.inverse_permutation = np.argsort(self.permutation)
 
     def factor(self, zhat: np.ndarray, ratio: np.ndarray, inside: np.ndarray) -> LinearOperator:
         n = self.n
@@ -130,19 +156,24 @@ class _Preconditioner:
         pyy = np.where(inside, 1.0, ratio * (1.0 - zhat[1] ** 2))
         k, c = self.radial, self.tangential
         cells = np.arange(n)
-        up, hu = self.up_pos, self.has_up
-        rows = np.concatenate([cells, cells, cells + n, cells + n, hu, hu, hu + n, hu + n])
-        cols = np.concatenate([cells, cells + n, cells, cells + n, up, up + n, up, up + n])
-        vals = np.concatenate([
-            (1 - pxx) * k + pxx * c, pxy * (c - k), pxy * (c - k), (1 - pyy) * k + pyy * c,
-            -pxx[hu] * c, -pxy[hu] * c, -pxy[hu] * c, -pyy[hu] * c,
-        ])
-        lu = splu(sparse.csc_matrix((vals, (rows, cols)), shape=(2 * n, 2 * n)), permc_spec="NATURAL")
+        rows = [cells, cells, cells + n, cells + n]
+        cols = [cells, cells + n, cells, cells + n]
+        vals = [(1 - pxx) * k + pxx * c, pxy * (c - k), pxy * (c - k), (1 - pyy) * k + pyy * c]
+        for has, up, coefficient in self.links:
+            rows += [has, has, has + n, has + n]
+            cols += [up, up + n, up, up + n]
+            vals += [pxx[has] * coefficient, pxy[has] * coefficient, pxy[has] * coefficient, pyy[has] * coefficient]
+        perm = self.permutation
+        matrix = sparse.csc_matrix(
+            (np.concatenate(vals), (perm[np.concatenate(rows)], perm[np.concatenate(cols)])), shape=(2 * n, 2 * n)
+        )
+        lu = splu(matrix, permc_spec="NATURAL")
         grid = self.disc.grid
         op = self.disc.op
+        inverse = self.inverse_permutation
 
         def apply(v):
-            w = lu.solve(v).reshape(2, n)
+            w = lu.solve(v[inverse])[perm].reshape(2, n)
             return grid.gather(op.apply_inverse(grid.scatter(w))).ravel()
 
         return LinearOperator((2 * n, 2 * n), matvec=apply, dtype=float)
@@ -156,7 +187,7 @@ def solve_grid(grid: Grid, poisson: float, creepage: Creepage, effects: ContactE
     s_g = creepage.field(xc, yc)
     p = grid.gather(grid.p)
     n_cells = p.size
-    rho = grid.hx / (disc.psi * op.self_term[0] - op.upstream_term[0])
+    rho = disc.slip_scale()
     precond = _Preconditioner(disc, rho)
 
     static = effects.static_friction
@@ -197,7 +228,7 @@ def solve_full_stick(grid: Grid, poisson: float, creepage: Creepage, effects: Co
     xc, yc = grid.centres()
     s_g = creepage.field(xc, yc)
     n = xc.size
-    rho = grid.hx / (disc.psi * op.self_term[0] - op.upstream_term[0])
+    rho = disc.slip_scale()
     inside = np.ones(n, dtype=bool)
     preconditioner = _Preconditioner(disc, rho).factor(np.zeros((2, n)), np.ones(n), inside)
 
