@@ -13,6 +13,8 @@ Effects are keyword arguments (see rig.contact.effects); an effect not named is 
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from rig import validate
@@ -26,6 +28,9 @@ from rig.contact.result import ContactMaps, ContactResult
 from rig.errors import ParameterError
 
 MODELS = ("rigid", "linear", "fastsim", "kinematic")
+# A rigid slip this many elastic slip units (mu p0 v/G) wide is full sliding to 1e-12: the elastic
+# slip, O(1), turns its direction only within 1e-12 a of the rolling point (hard cases 2 and 3).
+RIGID_SLIDING_CREEPAGE = 1e12
 DEFAULT_N = 32
 # Revision of the grid models' discretisation; part of every surrogate table's cache key.
 # 2: rim cells, second-order transport, grid-independent plastic slip (docs/contact-model.md).
@@ -63,10 +68,13 @@ def solve(
     l = validate.number("l_over_a", l_over_a)
     nu = validate.number("poisson", poisson, 0.0, 0.5)
     creepage = None if alpha == 0.0 else Creepage.from_rolling_point(alpha, c, l, nu)
-    if creepage is not None and not np.isfinite(creepage.phi):
-        creepage = None  # alpha' so small that the spin creepage overflows: rigid sliding
+    if creepage is not None and not np.all(np.isfinite([creepage.xi, creepage.eta, creepage.phi])):
+        creepage = None  # alpha' so small (or C so far out) that a creepage overflows: rigid sliding
     info = dict(alpha=alpha, c_over_a=c, l_over_a=l)
-    return _solve(model, shape, b_over_a, creepage, (c, l), nu, n, effects, info)
+    result = _solve(model, shape, b_over_a, creepage, (c, l), nu, n, effects, info)
+    if np.isinf(alpha):  # no slip anywhere: every coefficient is 0, nu_0 too (its alpha' -> inf limit)
+        result = dataclasses.replace(result, nu_0=0.0, info=dict(result.info, nu_MC=0.0))
+    return result
 
 
 def solve_creepage(
@@ -105,8 +113,12 @@ def _solve(model, shape, b_over_a, creepage, rolling_point, nu, n, effects, info
     built = ContactEffects.from_keywords(**effects)
     if built.rolling_resistance is not None:
         creepage, rolling_point = built.rolling_resistance.shift(creepage, rolling_point)
-    if creepage is None:  # alpha' = 0 (or below ~1e-307): unit spin about C fixes the slip directions
+    size = 0.0 if creepage is None else max(abs(creepage.xi), abs(creepage.eta), abs(creepage.phi))
+    if creepage is None:  # alpha' = 0 (or a creepage overflowed): unit spin about C fixes the slip directions
         creepage = Creepage(xi=rolling_point[1], eta=-rolling_point[0], phi=1.0)
+        rigid_sliding = True
+    elif size > RIGID_SLIDING_CREEPAGE:  # the elastic slip cannot turn the rigid slip: rigid sliding
+        creepage = Creepage(xi=creepage.xi / size, eta=creepage.eta / size, phi=creepage.phi / size)
         rigid_sliding = True
     else:
         rigid_sliding = False
@@ -116,7 +128,11 @@ def _solve(model, shape, b_over_a, creepage, rolling_point, nu, n, effects, info
         return _rigid(model, shape, beta, n, creepage, info, on_grid=model != "rigid")
     if model == "linear":
         if rigid_sliding:
-            raise ParameterError("alpha", 0.0, "> 0 for the linear model (it has no sliding)")
+            raise ParameterError(
+                "alpha" if "alpha" in info else "creepage", info.get("alpha", size),
+                f"alpha' > 0 and creepages <= {RIGID_SLIDING_CREEPAGE:g} elastic slip units for the linear model "
+                "(it has no sliding; this state is full sliding)",
+            )
         return _linear(shape, beta, nu, creepage, info)
     grid = make_grid(shape, beta, n)
     xc, yc = grid.centres()

@@ -8,6 +8,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from rig.contact.solve import solve, solve_creepage
+from rig.errors import ParameterError
 
 alphas = st.floats(1e-3, 1e5).map(float)
 ratios = st.floats(0.1, 10.0)
@@ -88,3 +89,40 @@ def test_alpha_below_the_float_range_is_rigid_sliding(model):
     tiny = solve(model, alpha=1e-310, **common)
     zero = solve(model, alpha=0.0, **common)
     assert (tiny.nu_T, tiny.nu_v, tiny.nu_0) == (zero.nu_T, zero.nu_v, zero.nu_0)
+
+
+@pytest.mark.parametrize("model", ["rigid", "linear", "fastsim", "kinematic"])
+def test_infinite_alpha_is_no_slip_with_every_coefficient_zero(model):
+    """alpha' = inf (documented as allowed) is the no-slip limit: nu_0 -> 0 like 1/alpha' (issue 14.10)."""
+    r = solve(model, shape="ellipse", b_over_a=1.0, alpha=np.inf, c_over_a=0.2, l_over_a=0.3, poisson=0.28, n=8)
+    assert (r.nu_T, r.nu_v, r.nu_0) == (0.0, 0.0, 0.0)
+
+
+@pytest.mark.parametrize("model", ["rigid", "fastsim", "kinematic"])
+@pytest.mark.parametrize(
+    "alpha, c, l, expected",
+    [(10.0, 1e156, 0.0, (0.0, 1.0)), (10.0, 0.0, -1e200, (1.0, 0.0)), (1e-156, 0.0, 0.0, None), (1e-300, 0.1, 0.2, None)],
+)
+def test_extreme_rolling_points_and_tiny_alpha_are_rigid_sliding(model, alpha, c, l, expected):
+    """A rolling point 1e156 a away or alpha' = 1e-156 is full sliding (issue 14.10: NaN and a raw
+    'Factor is exactly singular' before): finite, |nu| <= 1, equal to the same model at alpha' = 0."""
+    common = dict(shape="ellipse", b_over_a=1.0, c_over_a=c, l_over_a=l, poisson=0.28, n=12)
+    r = solve(model, alpha=alpha, **common)
+    sliding = solve(model, alpha=0.0, **common)
+    values = np.array([r.nu_T, r.nu_v, r.nu_0])
+    assert np.all(np.isfinite(values)) and abs(r.nu_T) <= 1 + 1e-9 and abs(r.nu_v) <= 1 + 1e-9
+    assert (r.nu_T, r.nu_v) == pytest.approx((sliding.nu_T, sliding.nu_v), abs=1e-9)
+    if expected is not None:
+        assert (r.nu_T, r.nu_v) == pytest.approx(expected, abs=1e-9)
+
+
+def test_linear_theory_names_a_full_sliding_state_instead_of_overflowing():
+    with pytest.raises(ParameterError, match="alpha.*no sliding"):
+        solve("linear", shape="ellipse", b_over_a=1.0, alpha=1e-156, c_over_a=0.1, l_over_a=0.0, poisson=0.28)
+
+
+def test_sliding_threshold_is_continuous():
+    """Just below and above RIGID_SLIDING_CREEPAGE the kinematic model gives the same forces."""
+    common = dict(shape="ellipse", b_over_a=1.0, alpha=10.0, l_over_a=0.0, poisson=0.28, n=12)
+    below, above = (solve("kinematic", c_over_a=c, **common) for c in (6.9e11, 7.0e11))
+    assert (below.nu_T, below.nu_v) == pytest.approx((above.nu_T, above.nu_v), abs=1e-12)
