@@ -73,6 +73,10 @@ PARAMETERS: Mapping[str, ParameterSpec] = MappingProxyType({
                                           "rig.stands.yoke.integration); rig accuracy studies it"),
     "balance_rate_Hz": ParameterSpec(1.0, "Hz", 0.05, 100.0, "[assumed] readings of the tangent balance per "
                                      "second (the operator reads the pointer)"),
+    "balance_step_N": ParameterSpec(0.098, "N", 1e-3, 1.0, "[assumed] scale step of the tangent balance at its "
+                                    "arm; 0.098 N reads the paper's 'accuracy 0.049 N' as a +-limit (u(T2) = "
+                                    "0.0113 N m, conservative default), 0.049 N as the step itself (0.0057 N m); "
+                                    "the log records it for the reduction (sensors.balance)"),
     "point_period_s": ParameterSpec(60.0, "s", 1.0, 3600.0, "[assumed] run time per operating point, places "
                                     "point k's gate at a fixed run time for the slow dynamometer drift"),
     "speed_ramp_s": ParameterSpec(1.0, "s", 0.01, 60.0, "[assumed] ramp time of the motor speed set-point "
@@ -156,6 +160,7 @@ class YokeParameters:
     dynamometer_rate_Hz: float
     ode_tolerance_factor: float
     balance_rate_Hz: float
+    balance_step_N: float
     point_period_s: float
     speed_ramp_s: float
     slip_speed_eps_m_s: float
