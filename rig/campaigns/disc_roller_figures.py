@@ -12,7 +12,10 @@ logged truth. All values are in the reduction's canonical frame (forward running
 times the direction; docs/stand-b.md), so a reverse run at sigma > 0 is drawn at c/a < 0.
 
 Summary: per load the fraction of points within 2u of the truth, M_C recovered, and the
-observations of seed 000 section 3.2.3 checked with numbers (what the simulation shows).
+observations of seed 000 section 3.2.3 checked with numbers (what the simulation shows) - for the
+run's alpha' and, from the same stand's truth (dashed lines in the figure), for the other alpha'
+option: eq. (21)'s Hertz estimate or the paper's stated range (effect paper_alpha_range,
+rig.stands.disc_roller.paper_alpha).
 """
 
 from __future__ import annotations
@@ -337,8 +340,8 @@ def paper_verdicts(points: pd.DataFrame) -> dict[str, str]:
 
 def alpha_option_lines(points: pd.DataFrame, name: str, run_stand, other_stand) -> list[str]:
     """Which of the paper's statements each alpha' option reproduces (issue 15, item 3): the run's
-    option from the measured points, the other from the same stand's noise-free truth at the same
-    settings."""
+    option from the measured points, the other from the same stand's truth at the same settings,
+    judged with the run's u (steady_points)."""
     loads = points["normal_force_N"]
     other = steady_points(other_stand, points)
     lines = [f"alpha' options (seed notes 3.2: the paper's 100 .. 1500 vs eq. (21)'s estimate is unresolved):",

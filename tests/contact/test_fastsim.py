@@ -66,7 +66,18 @@ def test_single_flexibility_variant_misses_the_combined_spin_force():
 def test_flexibilities_are_kalkers_closed_forms():
     """L1 = 8 a_K/(3 C11), L2 = 8 a_K/(3 C22), L3 = pi a_K sqrt(a_K/b_K)/(4 C23) with a_K = b/a, b_K = 1."""
     coeffs = kalker_coefficients(BETA, NU)
-    flex = fastsim.flexibility("ellipse", BETA, coeffs, Creepage(0.0, 0.0, 1.0))
+    flex = fastsim.kalker_flexibilities("ellipse", BETA, coeffs)
     k = _kalker_row(BETA, NU)
     assert flex == pytest.approx((8 * BETA / (3 * k["C11"]), 8 * BETA / (3 * k["C22"]),
                                   np.pi * BETA**1.5 / (4 * k["C23"])), rel=1e-9)
+
+
+def test_flexibilities_tend_to_kalkers_three_in_stick_and_to_one_in_sliding():
+    """The blend of fastsim.flexibility: L_i at small creepage (linear theory), one weighted L at
+    large creepage (so that full sliding is the rigid model: tests/contact/test_model_ladder.py)."""
+    coeffs = kalker_coefficients(BETA, NU)
+    three = fastsim.kalker_flexibilities("ellipse", BETA, coeffs)
+    small, large = Creepage(SMALL, 0.0, SMALL), Creepage(1e4, 0.0, 1e4)
+    assert fastsim.flexibility("ellipse", BETA, coeffs, small) == pytest.approx(three, rel=1e-9)
+    mean = three.weighted(large, BETA)
+    assert fastsim.flexibility("ellipse", BETA, coeffs, large) == pytest.approx((mean, mean, mean), rel=1e-9)

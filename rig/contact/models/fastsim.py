@@ -5,9 +5,8 @@ dq/dx = -(xi/L1 - phi y/L3, eta/L2 + phi x/L3): each creepage has its own flexib
 (Kalker, "A fast algorithm for the simplified theory of rolling contact", Vehicle System
 Dynamics 11 (1982) 1-13; "Three-dimensional elastic bodies in rolling contact", 1990, ch. 3).
 Wherever |q| would exceed the bound p the element slides with q along the trial traction
-(Kalker's projection; its slip increment uses one creepage-weighted flexibility so that full
-sliding opposes the rigid slip exactly). The three flexibilities make full stick reproduce linear theory's
-forces for each creepage and for any combination of them:
+(Kalker's projection). The three flexibilities make full stick reproduce linear theory's forces
+for each creepage and for any combination of them:
 
     L1 = 8 a_K/(3 C11 G),  L2 = 8 a_K/(3 C22 G),  L3 = pi a_K sqrt(a_K/b_K)/(4 C23 G)
 
@@ -19,9 +18,15 @@ The spin moment is not matched (FASTSIM's known deficit; docs/contact-model.md).
 ``single_flexibility`` is Kalker's one-parameter variant (one L, the creepage-weighted mean of
 L1, L2, L3): exact for a pure creepage, but with combined creepages it misses linear theory's
 forces (by 26 % for the spin force at b/a = 10, rolling point l = a); kept for comparison only.
-The traction bound is the model's own Hertz pressure (Kalker's FASTSIM uses a parabolic one) so
-that large creepage gives exactly the `rigid` model. Dimensionless units as in
-rig.contact.models.kinematic.
+With three different flexibilities Kalker's projection makes a sliding element's traction point
+against the *scaled* slip (xi/L1 - phi y/L3, eta/L2 + phi x/L3), not the rigid slip: in full
+sliding nu_T and nu_v were up to 25 % off the rigid model for combined creepage (line contact,
+b/a = 1, C = (0.4, 0.5) a). ``flexibility`` therefore blends the three flexibilities towards their
+creepage-weighted mean as the contact saturates (a smooth function of the creepage only): exact
+linear theory in full stick, exactly the rigid model in full sliding, continuous in between
+[R, our choice; docs/contact-model.md gives the alternatives tried and why they were
+rejected]. The traction bound is the model's own Hertz pressure (Kalker's FASTSIM uses a
+parabolic one). Dimensionless units as in rig.contact.models.kinematic.
 """
 
 from __future__ import annotations
@@ -64,9 +69,8 @@ def shape_integrals(shape: str, b_over_a: float) -> tuple[float, float]:
     return 4.0 * b**2, 4.0 * b**3 / 3.0
 
 
-def flexibility(shape: str, b_over_a: float, coeffs: CreepCoefficients, creepage: Creepage) -> Flexibilities:
-    """Kalker's three flexibilities (L1, L2, L3) [a/G] (they do not depend on the creepage;
-    the argument keeps the signature of ``single_flexibility``)."""
+def kalker_flexibilities(shape: str, b_over_a: float, coeffs: CreepCoefficients) -> Flexibilities:
+    """Kalker's three flexibilities (L1, L2, L3) [a/G]: full stick reproduces linear theory."""
     i_xi, i_phi = shape_integrals(shape, b_over_a)
     return Flexibilities(
         L1=float(i_xi / (b_over_a * coeffs.C11)),
@@ -75,9 +79,26 @@ def flexibility(shape: str, b_over_a: float, coeffs: CreepCoefficients, creepage
     )
 
 
+def flexibility(shape: str, b_over_a: float, coeffs: CreepCoefficients, creepage: Creepage) -> Flexibilities:
+    """The flexibilities FASTSIM uses [a/G]: Kalker's three, L_i, blended towards their
+    creepage-weighted mean L_w as the contact saturates,
+
+        L_i,eff = L_w + s (L_i - L_w),  s = 1/(1 + eps^2),  eps = 2 (b/a) |w|/L_w,
+
+    |w| = sqrt(xi^2 + eta^2 + (b/a) phi^2) (Kalker's weighting): eps is the full-stick traction
+    at the trailing edge over mu p0. Small creepage (s -> 1): the three flexibilities, exact in
+    full stick; large creepage (s -> 0): one flexibility, so that full sliding opposes the rigid
+    slip (the rigid model). [R] our choice, see the module docstring."""
+    three = kalker_flexibilities(shape, b_over_a, coeffs)
+    mean = three.weighted(creepage, b_over_a)
+    eps = 2.0 * b_over_a * np.sqrt(creepage.xi**2 + creepage.eta**2 + b_over_a * creepage.phi**2) / mean
+    s = 1.0 / (1.0 + eps * eps)
+    return Flexibilities(*(float(mean + s * (l - mean)) for l in three))
+
+
 def single_flexibility(shape: str, b_over_a: float, coeffs: CreepCoefficients, creepage: Creepage) -> float:
     """Kalker's one-parameter variant: L1, L2, L3 weighted by |xi|, |eta|, sqrt(b/a)|phi| [a/G]."""
-    return flexibility(shape, b_over_a, coeffs, creepage).weighted(creepage, b_over_a)
+    return kalker_flexibilities(shape, b_over_a, coeffs).weighted(creepage, b_over_a)
 
 
 @dataclass(frozen=True, eq=False)
@@ -94,20 +115,16 @@ class SlipIncrements:
     x: np.ndarray
     y: np.ndarray
 
-    def over(self, flex: Flexibilities, b_over_a: float) -> tuple[np.ndarray, np.ndarray]:
-        """Rigid-slip increments divided by the flexibilities, two ways, (2, nxg, ny) each [mu p0]:
-        (exact integral over the step with L1, L2, L3; step x slip at the cell centre over one
-        creepage-weighted flexibility).
+    def over(self, flex: Flexibilities) -> tuple[np.ndarray, np.ndarray]:
+        """Rigid-slip increments over each cell's step divided by the flexibilities (xi/L1, eta/L2,
+        phi/L3), two ways, (2, nxg, ny) each [mu p0]: (exact integral, step x value at the cell centre).
 
         s_g is linear in x, so the midpoint rule gives the exact integral: full-stick tractions
-        are then exact at the cell centres. The second form gives a sliding element its
-        direction: collocated at the centre and with one flexibility, so that in full sliding
-        the traction points exactly against the local rigid slip (three flexibilities would
-        turn it towards the scaled slip, and large creepage would not reach the rigid model).
+        are then exact at the cell centres. The second form is collocated at the centre: an
+        element that slides takes its direction from it (Kalker's projection).
         """
-        exact = self.step * flex.scale(self.creepage).field(self.x_mid, self.y)
-        collocated = self.step * self.creepage.field(self.x, self.y) / flex.weighted(self.creepage, b_over_a)
-        return exact, collocated
+        scaled = flex.scale(self.creepage)
+        return self.step * scaled.field(self.x_mid, self.y), self.step * scaled.field(self.x, self.y)
 
 
 def slip_increments(grid: Grid, creepage: Creepage) -> SlipIncrements:
@@ -128,7 +145,7 @@ def march(grid: Grid, increments: SlipIncrements, bound_full: np.ndarray, flex: 
     """
     if not isinstance(flex, Flexibilities):
         flex = Flexibilities(float(flex), float(flex), float(flex))
-    exact, collocated = increments.over(flex, grid.b_over_a)
+    exact, collocated = increments.over(flex)
     q = np.zeros_like(exact)
     for i in range(1, q.shape[1]):
         stick = q[:, i - 1] - exact[:, i]
