@@ -39,7 +39,8 @@ def settings(brake: float) -> dict[str, float]:
 
 def run(spec: ContactSpec, drive: DriveMode, effects: tuple[str, ...], points: int, gate: float) -> dict:
     """Time a sweep; medians per point [s] and the real-time ratio [1]."""
-    stand = YokeStand({}, {name: {} for name in effects}, spec, drive)
+    # the sweep crosses l = 0 from l < 0: negative set-points need the load device
+    stand = YokeStand({}, {name: {} for name in (*effects, "load_device")}, spec, drive)
     stand.calibrate(1)
     brakes = [-1.0 + 2.2 * k / max(points - 1, 1) for k in range(points)]
     phases = {"settle": [], "gate": [], "read": []}

@@ -85,7 +85,8 @@ def walkthrough(m: Measured) -> str:
         f"| calibration (weights) | S = {cal['sensitivity'].value:.5f} V/N, s0 = {cal['offset'].value * 1e3:.3f} mV, "
         f"u(S)/S = {cal['u_sensitivity'].value / cal['sensitivity'].value * 100:.2f} % | "
         "covariance holds the weights |",
-        f"| tangent balance | {balance.size} readings, mean T2 = {r.brake_moment.value:.4f} N m (step 0.0196 N m) | "
+        f"| tangent balance | {balance.size} readings, mean T2 = {r.brake_moment.value:.4f} N m "
+        f"(step {rec.readings['balance_resolution'].value:.4g} N m) | "
         f"u(scatter) = {r.brake_moment.u * 1e3:.2f} mN m, u(step) = {r.brake_moment.u_step * 1e3:.2f} mN m |",
         f"| spring 5 | F_N = {r.normal_force.value:g} N | u = {r.normal_force.u:g} N (assumed) |",
         "",

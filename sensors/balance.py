@@ -2,18 +2,19 @@
 
 The brake's reaction moment is taken by an arm of length r and balanced by a pendulum whose
 deflection is read on a scale graduated in force at the arm; the reading is the force at the
-arm rounded to the scale step (resolution) times the arm. The paper gives 0.049 N (5 gf) at the
-arm "corresponding to" 0.0196 N m, hence the arm r = 0.0196/0.049 = 0.400 m (seed notes 3.1).
+arm rounded to the scale step times the arm. The paper gives an accuracy of 0.049 N (5 gf) at
+the arm "corresponding to" 0.0196 N m, hence the arm r = 0.0196/0.049 = 0.400 m (seed notes 3.1).
 
-Uncertainty model (documented choice): 0.049 N is read as the scale step, the reading error is
-uniform within +-step/2, u = step/sqrt(12) = 0.0141 N at the arm = 5.66e-3 N m. The reading
-the paper calls "accuracy" (0.0196 N m) is the step in moment; a conservative user can read it
-as a bound +-0.0196 N m instead (u = 0.0113 N m) - see docs/instruments.md. Readings beyond
-the full scale stick at +-full scale and are flagged (never silent). Optional noise [N at the
-arm] models reading scatter (pivot friction, pointer jitter); off by default. Each reading
-states the step and the noise level in moment units, so that a log carries what a reduction
-needs for the uncertainty of their mean (sensors.quantisation: the step's bias does not
-average out, the scatter does).
+How to read "accuracy 0.049 N" is a stated parameter, the scale step ``resolution_N`` [N]:
+* as a +-limit of the reading error (the default, conservative): step 2 x 0.049 = 0.098 N, so the
+  rounding error lies within +-0.049 N, u = step/sqrt(12) = 0.0283 N at the arm = 0.0113 N m;
+* as the scale step itself: step 0.049 N, error within +-0.0245 N, u = 0.0141 N = 0.0057 N m.
+The log records the step (in moment) that the reduction then uses, so the two cannot disagree;
+docs/instruments.md says why the limit is the default. Readings beyond the full scale stick at
++-full scale and are flagged (never silent). Optional noise [N at the arm] models reading
+scatter (pivot friction, pointer jitter); off by default. Each reading states the step and the
+noise level in moment units, so that a log carries what a reduction needs for the uncertainty
+of their mean (sensors.quantisation: the step's bias does not average out, the scatter does).
 """
 
 from __future__ import annotations
@@ -26,8 +27,12 @@ from sensors import validate
 from sensors.errors import InstrumentParameterError
 from sensors.noise import WhiteNoise
 
-STAND_A_RESOLUTION_N = 0.049
-"""Scale step at the arm [N] (text: 0.049 N = 5 gf)."""
+STAND_A_ACCURACY_N = 0.049
+"""The paper's "accuracy" of the balance at the arm [N] (text: 0.049 N = 5 gf)."""
+STEP_IF_ACCURACY_IS_LIMIT_N = 2.0 * STAND_A_ACCURACY_N
+"""Scale step [N] whose rounding error lies within +-0.049 N (the accuracy read as a +-limit; default)."""
+STEP_IF_ACCURACY_IS_STEP_N = STAND_A_ACCURACY_N
+"""Scale step [N] if the accuracy is read as the scale step itself."""
 STAND_A_ARM_M = 0.0196 / 0.049
 """Arm of the balance [m] (computed from the text: 0.0196 N m / 0.049 N = 0.400 m)."""
 STAND_A_FULL_SCALE_N = 25.0
@@ -50,10 +55,11 @@ class BalanceReading:
 
 @dataclass(frozen=True, eq=False)
 class TangentBalance:
-    """Arm [m], scale step at the arm [N], full scale at the arm [N], optional noise [N]."""
+    """Arm [m], scale step at the arm [N] (default: the paper's accuracy read as a +-limit, above),
+    full scale at the arm [N], optional noise [N]."""
 
     arm_m: float = STAND_A_ARM_M
-    resolution_N: float = STAND_A_RESOLUTION_N
+    resolution_N: float = STEP_IF_ACCURACY_IS_LIMIT_N
     full_scale_N: float = STAND_A_FULL_SCALE_N
     noise: WhiteNoise | None = None
 
@@ -68,7 +74,7 @@ class TangentBalance:
 
     @property
     def resolution_N_m(self) -> float:
-        """Scale step in moment, arm * resolution [N m] (0.0196 N m for stand A)."""
+        """Scale step in moment, arm * resolution [N m] (stand A: 0.0392 N m, or 0.0196 N m read as a step)."""
         return self.arm_m * self.resolution_N
 
     @property

@@ -12,7 +12,10 @@ logged truth. All values are in the reduction's canonical frame (forward running
 times the direction; docs/stand-b.md), so a reverse run at sigma > 0 is drawn at c/a < 0.
 
 Summary: per load the fraction of points within 2u of the truth, M_C recovered, and the
-observations of seed 000 section 3.2.3 checked with numbers (what the simulation shows).
+observations of seed 000 section 3.2.3 checked with numbers (what the simulation shows) - for the
+run's alpha' and, from the same stand's truth (dashed lines in the figure), for the other alpha'
+option: eq. (21)'s Hertz estimate or the paper's stated range (effect paper_alpha_range,
+rig.stands.disc_roller.paper_alpha).
 """
 
 from __future__ import annotations
@@ -89,13 +92,13 @@ def series(points: pd.DataFrame) -> list[tuple[tuple, pd.DataFrame]]:
             for key, rows in points.groupby(list(SETTINGS), sort=True)]
 
 
-def truth_curves(points: pd.DataFrame, log_path: Path) -> tuple[dict[tuple, pd.DataFrame], str]:
+def truth_curves(points: pd.DataFrame, log_path: Path, stand=None) -> tuple[dict[tuple, pd.DataFrame], str]:
     """Truth lines per curve key - l_mm [mm] and the QUANTITIES columns [N, N m] of the logged
-    stand's quasi-static steady state (canonical frame) - and a note ("" or why the lines join
-    the logged truth instead)."""
+    stand's quasi-static steady state (canonical frame), or of ``stand`` if given - and a note
+    ("" or why the lines join the logged truth instead)."""
     if "true_F_T_N" not in points:
         return {}, "no truth in the log"
-    stand, note = _logged_stand(log_path)
+    stand, note = (stand, "") if stand is not None else _logged_stand(log_path)
     curves = {}
     for key, rows in series(points):
         if stand is None:
@@ -107,8 +110,8 @@ def truth_curves(points: pd.DataFrame, log_path: Path) -> tuple[dict[tuple, pd.D
     return curves, note
 
 
-def _logged_stand(log_path: Path):
-    """The stand the log's scene describes, or (None, reason)."""
+def _logged_scene(log_path: Path):
+    """The stand scene the log stores, or (None, reason)."""
     from rig.scenes.load import parse_scene
     from rig.scenes.stand_scene import StandScene
 
@@ -118,7 +121,58 @@ def _logged_stand(log_path: Path):
         return None, f"the log's scene cannot be rebuilt ({error}); lines join the logged truth"
     if not isinstance(scene, StandScene):
         return None, "the log's scene is not a stand scene; lines join the logged truth"
-    return scene.build_stand(), ""
+    return scene, ""
+
+
+def _logged_stand(log_path: Path):
+    """The stand the log's scene describes, or (None, reason)."""
+    scene, note = _logged_scene(log_path)
+    return (None, note) if scene is None else (scene.build_stand(), "")
+
+
+def other_alpha_stand(log_path: Path):
+    """The logged stand with the other alpha' option (effect paper_alpha_range toggled), or None."""
+    import dataclasses
+
+    from rig.stands.disc_roller.paper_alpha import EFFECT, PARAMETERS
+
+    scene, _ = _logged_scene(log_path)
+    if scene is None:
+        return None
+    effects = dict(scene.effects)
+    if EFFECT in effects:
+        del effects[EFFECT]
+    else:
+        effects[EFFECT] = {name: default for name, (default, _unit) in PARAMETERS.items()}
+    return dataclasses.replace(scene, effects=effects).build_stand()
+
+
+def alpha_option(stand) -> str:
+    """Which alpha' a stand's contact runs at, in words."""
+    from rig.stands.disc_roller.paper_alpha import EFFECT
+
+    if EFFECT in stand.effects:
+        e = stand.effects[EFFECT]
+        return (f"the paper's stated alpha' range ({e['alpha_low']:g} .. {e['alpha_high']:g} for "
+                f"{e['force_low_N']:g} .. {e['force_high_N']:g} N; effect {EFFECT})")
+    return "eq. (21) with Hertz line contact (effect paper_alpha_range off)"
+
+
+def alpha_values(stand, loads) -> str:
+    """alpha' the stand's contact runs at per load [1], e.g. '9 N: 10.6, 144 N: 42.6'."""
+    p = stand.params
+    return ", ".join(f"{f:g} N: {p.alpha_prime(f) * stand.alpha_factor(p.b_over_a(f)):.1f}" for f in sorted(set(loads)))
+
+
+def steady_points(stand, points: pd.DataFrame) -> pd.DataFrame:
+    """The quasi-static truth of ``stand`` at the points' settings as a points frame (values = truth)
+    with the points' own u, so that the observation checks judge it with what the run's instruments
+    resolve (a step below 2u is 'unresolved', not a drop)."""
+    rows = [_steady(stand, {k: row[k] for k in SETTINGS}, row["l_mm"]) for _, row in points.iterrows()]
+    frame = points[list(SETTINGS) + ["c_over_a", "l_mm"] + [f"u_{c}" for c in QUANTITIES]].copy()
+    for column in QUANTITIES:
+        frame[column] = [r[column] for r in rows]
+    return frame
 
 
 def _steady(stand, settings: dict, l_mm: float) -> dict[str, float]:
@@ -169,7 +223,7 @@ def agreement_lines(points: pd.DataFrame) -> list[str]:
         z = np.concatenate([_z(rows, c) for c in QUANTITIES])
         largest = f"max z {np.nanmax(z):.2f}" if np.isfinite(z).any() else "no finite z"
         b_a, alpha = rows["true_b_over_a"].iloc[0], rows["true_alpha_prime"].iloc[0]
-        lines.append(f"  {_label(key, [k for k, _ in groups])} (b/a {b_a:.2f}, alpha' {alpha:.1f}): "
+        lines.append(f"  {_label(key, [k for k, _ in groups])} (b/a {b_a:.2f}, alpha' of eq. (21) {alpha:.1f}): "
                      f"{counts}; {largest}")
     return lines
 
@@ -274,28 +328,56 @@ def _verdict_slow(smallest: float) -> str:
     return "partly: sub-proportional at some positions, nowhere insensitive" if smallest < 0.9 else "not reproduced"
 
 
-def observation_lines(points: pd.DataFrame, name: str) -> list[str]:
-    """The paper's observations (seed 000 3.2.3) against what the simulation shows, with numbers.
-    The verdicts are our reading of the text: 'insensitive' = p < 0.3, 'slower' = p < 0.9 [R]."""
+RISES = "peripheral forces do not always increase with the pressure force"
+SLOW = "forces and moment grow much more slowly with F_N than elastic deformation implies"
+
+
+def paper_verdicts(points: pd.DataFrame) -> dict[str, str]:
+    """The two observations of seed 000 3.2.3 with a verdict: {statement: verdict}."""
+    p = [v for c in CHANNELS for v in load_exponents(points, c).values()]
+    return {RISES: _verdict_rises(load_steps(points)), SLOW: _verdict_slow(min(p, default=math.nan))}
+
+
+def alpha_option_lines(points: pd.DataFrame, name: str, run_stand, other_stand) -> list[str]:
+    """Which of the paper's statements each alpha' option reproduces (issue 15, item 3): the run's
+    option from the measured points, the other from the same stand's truth at the same settings,
+    judged with the run's u (steady_points)."""
+    loads = points["normal_force_N"]
+    other = steady_points(other_stand, points)
+    lines = [f"alpha' options (seed notes 3.2: the paper's 100 .. 1500 vs eq. (21)'s estimate is unresolved):",
+             f"  this run: {alpha_option(run_stand)}; alpha' {alpha_values(run_stand, loads)}",
+             f"  other, dashed lines (truth only): {alpha_option(other_stand)}; alpha' {alpha_values(other_stand, loads)}"]
+    for label, frame in (("this run", points), ("other", other)):
+        verdicts = paper_verdicts(frame)
+        lines.append(f"  {label}: " + "; ".join(f"'{s}' - {v}" for s, v in verdicts.items()))
+    lines.append("  observations with the other alpha' (truth at the run's settings, judged with the run's u):")
+    lines += [f"    {line}" for line in observation_lines(other, name, source="truth")[1:]]
+    return lines
+
+
+def observation_lines(points: pd.DataFrame, name: str, source: str = "measured") -> list[str]:
+    """The paper's observations (seed 000 3.2.3) against what the simulation shows, with numbers;
+    ``source`` names what the points' values are. The verdicts are our reading of the text:
+    'insensitive' = p < 0.3, 'slower' = p < 0.9 [R]."""
     c_over_a = points["c_over_a"].to_numpy(dtype=float)
     paper = PAPER_C_OVER_A[name]
     lines = [f"rolling point: c/a = {_span(c_over_a, '.3f')} (paper, Fig. {name[3:]}: c/a = {paper:g})"
              + ("" if np.allclose(c_over_a, paper, atol=0.05) else " - NOT the paper's rolling point")]
     steps = load_steps(points)
+    verdicts = paper_verdicts(points)
     others = []
     for key, state in steps.items():
         if state != "rises":
             largest = points.loc[np.isclose(points["l_mm"], key[-1]), "F_T_N"].abs().max()
             others.append(f"l = {key[-1]:g} mm {state} (|F_T| <= {largest:.2g} N)")
     lines.append(f"paper: 'peripheral forces do not always increase with the pressure force' - "
-                 f"{_verdict_rises(steps)}: |F_T| rises at every load step (by > 2u) at "
+                 f"{verdicts[RISES]}: |F_T| rises at every load step (by > 2u) at "
                  f"{sum(s == 'rises' for s in steps.values())} of {len(steps)} positions"
                  + (f"; {', '.join(others)}" if others else ""))
     p = {c: load_exponents(points, c) for c in CHANNELS}
-    smallest = min((v for e in p.values() for v in e.values()), default=math.nan)
     loads = _span(points["normal_force_N"], ".0f")
     lines.append("paper: forces and moment grow much more slowly with F_N than elastic deformation implies, "
-                 f"insensitive at some positions - {_verdict_slow(smallest)}: |X| ~ F_N^p ({loads} N),")
+                 f"insensitive at some positions - {verdicts[SLOW]}: |X| ~ F_N^p ({loads} N),")
     lines.append(f"  p(F_T) {_extremes(p['F_T_N'])}, p(F_V) {_extremes(p['F_V_N'])}, "
                  f"p(T_Mo) {_extremes(p['T_Mo_N_m'])} (p = 1: proportional)")
     growth = {c: _span(distance_factors(points, c), ".1f") for c in ("F_T_N", "T_Mo_N_m", "M_C_N_m")}
@@ -306,12 +388,14 @@ def observation_lines(points: pd.DataFrame, name: str) -> list[str]:
     lateral = ", ".join(f"{f:g} N: {v:+.3f}" for f, v in
                         zip(at_zero["normal_force_N"], at_zero["F_V_N"] / at_zero["normal_force_N"]))
     lines.append(f"F_V/F_N at l = 0: {lateral or 'n/a'}; F_V > 0 at {int((points['F_V_N'] > 0).sum())} "
-                 f"of {len(points)} points (measured)")
+                 f"of {len(points)} points ({source})")
     return lines
 
 
-def draw(points: pd.DataFrame, curves: dict[tuple, pd.DataFrame], path: Path, title: str, caption: str) -> None:
-    """The four panels into ``path`` (PNG): points +-2u, truth lines, one colour per curve."""
+def draw(points: pd.DataFrame, curves: dict[tuple, pd.DataFrame], path: Path, title: str, caption: str,
+         other: dict[tuple, pd.DataFrame] | None = None) -> None:
+    """The four panels into ``path`` (PNG): points +-2u, truth lines, one colour per curve; ``other``:
+    dashed truth lines of the other alpha' option."""
     from rig.plotting import colors, new_figure
 
     groups = series(points)
@@ -326,6 +410,8 @@ def draw(points: pd.DataFrame, curves: dict[tuple, pd.DataFrame], path: Path, ti
                         ms=5, capsize=2, label=f"{_label(key, keys)}")
             if key in curves:
                 ax.plot(curves[key]["l_mm"], curves[key][column], "-", color=color, lw=1.0)
+            if other and key in other:
+                ax.plot(other[key]["l_mm"], other[key][column], "--", color=color, lw=0.8)
         ax.axhline(0.0, color="0.7", lw=0.6)
         ax.set_ylabel(label)
         ax.grid(alpha=0.3)
@@ -343,15 +429,22 @@ def _campaign(name: str, reduced: pd.DataFrame, log_path: Path, out_dir: Path, t
     if reduced.empty:
         return CampaignOutcome((), (f"{name}.png not drawn: the run has no reduced point",))
     points = campaign_points(reduced, Path(log_path))
-    curves, note = truth_curves(points, Path(log_path))
+    run_stand, _ = _logged_stand(Path(log_path))
+    curves, note = truth_curves(points, Path(log_path), run_stand)
+    other_stand = None if note or run_stand is None else other_alpha_stand(Path(log_path))
+    other = truth_curves(points, Path(log_path), other_stand)[0] if other_stand is not None else None
     caption = (f"points: measured, error bars +-{COVERAGE:g}u (k = {COVERAGE:g}); lines: the simulation's truth "
-               f"(quasi-static steady state of the simulated stand); canonical frame (forward running); "
+               f"(quasi-static steady state of the simulated stand); "
+               + ("dashed: the same stand at the other alpha' option (summary); " if other else "")
+               + f"canonical frame (forward running); "
                f"paper: seed 000 Fig. {name[3:]}, c/a = {PAPER_C_OVER_A[name]:g}" + (f"; {note}" if note else ""))
     figure = f"{name}.png"
-    draw(points, curves, Path(out_dir) / figure, f"{title}\n{_conditions(points)}", caption)
+    draw(points, curves, Path(out_dir) / figure, f"{title}\n{_conditions(points)}", caption, other)
     lines = [f"{figure}: {len(points)} points in {len(series(points))} curves; {caption}"]
     lines += [_line_check(points, curves)] if curves and not note else []
     lines += agreement_lines(points) + moment_lines(points) + observation_lines(points, name)
+    if other_stand is not None:
+        lines += alpha_option_lines(points, name, run_stand, other_stand)
     return CampaignOutcome((figure,), tuple(lines))
 
 

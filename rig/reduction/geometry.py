@@ -46,7 +46,8 @@ class StandAGeometry:
     balance_arm: float = _const(0.400, "m", "computed", "seed notes 3.1: 0.0196 N m / 0.049 N")
     weights_half_width: float = _const(0.098, "N", "text", "seed 000: calibration weights +-10 gf")
     balance_half_width: float = _const(0.049, "N", "text",
-                                       "seed 000: tangent balance 5 gf (its scale step, sensors.balance)")
+                                       "seed 000: tangent balance accuracy 5 gf, read as a +-limit "
+                                       "(the simulated scale step is the stand parameter balance_step_N)")
     load_b_over_a: tuple[tuple[float, float], ...] = field(
         default=((96.2, 1.0), (385.0, 2.0)),
         metadata=dict(unit="N, 1", tag="text", source="seed 000: b/a = 1, 2 at 96.2, 385 N (pairing: seed notes 3.1)"),
@@ -68,14 +69,14 @@ class StandAGeometry:
 
     @property
     def balance_moment_step(self) -> float:
-        """Scale step of the tangent balance in moment [N m] (0.049 N x 0.400 m = 0.0196 N m): the
-        graduation sensors.balance rounds to; the paper calls it the "accuracy" (docs/reduction.md 4)."""
+        """The paper's "accuracy" of the tangent balance in moment [N m] (0.049 N x 0.400 m = 0.0196 N m);
+        the simulated balance's scale step is a stated parameter (sensors.balance, docs/reduction.md 4)."""
         return self.balance_half_width * self.balance_arm
 
     @property
     def balance_moment_half_width(self) -> float:
-        """The same 0.0196 N m read as the paper's +-bound [N m] (kept for that reading; the
-        reduction uses the step, u = step/sqrt(12), not bound/sqrt(3))."""
+        """The same 0.0196 N m read as the paper's +-bound [N m] (u = bound/sqrt(3) = 0.0113 N m; the
+        reduction takes u from the scale step the log records, step/sqrt(12), the same by default)."""
         return self.balance_moment_step
 
     @property

@@ -38,6 +38,7 @@ surrogate = true
 table_points = [5, 2, 3]
 
 [effects.dynamometer_noise]
+[effects.load_device]
 
 [procedure]
 settle_timeout_s = 10.0

@@ -220,3 +220,18 @@ def test_a_run_without_reduced_points_draws_nothing_and_says_so(tmp_path):
     outcome = paper_figure("fig15")(pd.DataFrame({"c_over_a": []}), path, tmp_path, "title")
     assert outcome.files == () and "no reduced point" in outcome.summary[0]
     assert not (tmp_path / "fig15.png").exists()
+
+
+@pytest.mark.parametrize("name", ["fig14", "fig15"])
+def test_summary_states_what_each_alpha_option_reproduces(runs, name):
+    """Issue 15, item 3: the run's alpha' (eq. 21, Hertz: 10.6 .. 42.6 at mu = 0.8, seed notes 3.2) and the
+    paper's stated range (ca. 100 .. ca. 1500 for 9 .. 144 N, seed 000 3.2) both in the summary, each with
+    the verdicts on the paper's statements."""
+    report = runs[name][0]
+    summary = report.summary
+    assert "alpha' options" in summary
+    assert "this run: eq. (21) with Hertz line contact" in summary and "alpha' 9 N: 10.6, 144 N: 42.6" in summary
+    assert "other, dashed lines (truth only): the paper's stated alpha' range (100 .. 1500" in summary
+    assert "alpha' 9 N: 100.0, 144 N: 1500.0" in summary
+    for label in ("this run", "other"):
+        assert f"  {label}: 'peripheral forces do not always increase with the pressure force' - " in summary

@@ -28,16 +28,16 @@ from rig.scenes import load_scene, parse_scene
 SHORT = {  # the 385 N set-points put l/a inside the 96.2 N span (l/a ~ 0.63 T_set and 0.19 T_set per N m)
     "n = 16 ": "n = 8 ",
     "table_points = [21, 3, 5]": "table_points = [9, 2, 3]",
-    "{ start = -1.6, stop = 1.6, num = 24 }": "[-1.2, 0.6, 1.2]",  # T_set = 0 would make mu_T 0/D
+    "{ start = 0.1, stop = 1.6, num = 24 }": "[0.3, 0.9, 1.5]",  # brake only (T_set = 0 would make mu_T 0/D)
     "gate_time_s = 20.0 ": "gate_time_s = 2.0 ",
 }
-SHORT_385 = {"fig10": "{ start = -5.5, stop = 5.2, num = 24 }", "fig11": "{ start = -5.4, stop = 5.1, num = 24 }"}
+SHORT_385 = {"fig10": "{ start = 0.3, stop = 5.2, num = 24 }", "fig11": "{ start = 0.3, stop = 5.1, num = 24 }"}
 L1, L2, A, DELTA_H = 42.76e-3, -50.50e-3, 1.215e-3, 1.06e-3  # seed notes 3.1 [m]
 
 
 def _short(name: str):
     text = load_scene(name).text
-    for old, new in (SHORT | {SHORT_385[name]: "[-3.6, 2.0, 3.6]"}).items():
+    for old, new in (SHORT | {SHORT_385[name]: "[1.5, 3.0, 4.5]"}).items():
         assert old in text, (name, old)
         text = text.replace(old, new)
     return parse_scene(text, name=f"{name}_short")
@@ -179,3 +179,14 @@ def test_a_log_without_truth_still_gives_the_figure_and_the_contrast(runs, tmp_p
     assert sum("no truth in the log, agreement not checked" in line for line in outcome.summary) == 2
     assert any(line.startswith("paper's claim") and "holds" in line for line in outcome.summary)
     assert not any("c/a vs caption, truth" in line for line in outcome.summary)
+
+
+@pytest.mark.parametrize("name", ["fig10", "fig11"])
+def test_default_set_points_are_what_the_shoe_brake_can_do(name):
+    """Issue 15, item 4: the paper's shoe brake only brakes (T_set >= 0); negative set-points need the
+    idealised load device, which a scene must name (fig10/fig11 do not)."""
+    scene = load_scene(name)
+    values = [v for series in scene.procedure.series for key, vs in series.sweep for v in vs
+              if key == "brake_setpoint_N_m"]
+    assert len(values) == scene.procedure.n_points
+    assert "load_device" not in scene.effects and min(values) > 0.0, (scene.effects, min(values))

@@ -1,4 +1,5 @@
-"""Kalker's table (independent source) against this package's own full-stick solver."""
+"""Kalker's table (independent source) against the stored table derived with this package's full-stick
+solver (a file comparison; tests/contact/test_linear_tables.py re-runs the solver itself)."""
 
 import csv
 from importlib import resources

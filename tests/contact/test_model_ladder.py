@@ -24,8 +24,8 @@ def test_kinematic_tends_to_its_own_rigid_limit_as_alpha_goes_to_zero(shape, b, 
 @pytest.mark.parametrize("shape, b", [("ellipse", 1.0), ("ellipse", 2.0), ("ellipse", 0.5), ("line", 1.0), ("line", 0.5)])
 @pytest.mark.parametrize("creepage", ["xi", "eta", "phi"])
 def test_fastsim_is_linear_theory_at_small_pure_creepage(shape, b, creepage):
-    """Kalker's flexibilities make FASTSIM exact in full stick for each pure creepage; combined
-    creepages share one weighted flexibility, a compromise of Kalker's design (docs)."""
+    """Kalker's three flexibilities make FASTSIM's full-stick forces exact for each pure creepage
+    (combined creepages: tests/contact/test_fastsim.py)."""
     unit = {"xi": (1e-6, 0.0, 0.0), "eta": (0.0, 1e-6, 0.0), "phi": (0.0, 0.0, 1e-6)}[creepage]
     xi, eta, phi = unit
     common = dict(shape=shape, b_over_a=b, xi=xi, eta=eta, phi=phi, poisson=0.28, n=32)

@@ -55,21 +55,25 @@ def ideal(tmp_path_factory):
     return stand, outcome, readings, reduced
 
 
+STEP_N_M = 0.098 * 0.400  # default balance_step_N at the 0.400 m arm [N m]
+
+
 def resolution_bound(reduced, name: str) -> float:
     """sum_i |dy/dx_i| h_i over the inputs with a resolution (h: half step, or 1 count)."""
     p = reduced.propagation
     row = p.jacobian[p.output_names.index(name)]
-    h = {"N1": 1.0, "N2": 1.0, "dyn_signal_V": Adc().lsb_V / 2, "T2_step_N_m": 0.0196 / 2}  # T2 enters additively
+    h = {"N1": 1.0, "N2": 1.0, "dyn_signal_V": Adc().lsb_V / 2, "T2_step_N_m": STEP_N_M / 2}  # T2 enters additively
     return float(sum(abs(row[p.inputs.names.index(k)]) * v for k, v in h.items()))
 
 
 def test_the_log_states_an_ideal_balance_and_converter(ideal):
     _, outcome, readings, _ = ideal
     assert outcome.record.readings["balance_noise_std"].value == 0.0
-    assert outcome.record.readings["balance_resolution"].value == pytest.approx(0.0196, rel=1e-12)
+    assert outcome.record.readings["balance_resolution"].value == pytest.approx(STEP_N_M, rel=1e-12)
     assert outcome.record.calibration["dynamometer_10"]["reading_resolution"].value == pytest.approx(20 / 2**16)
-    # no noise: the balance's u is its step alone, as a rectangular bias of the scale (0.0196/sqrt(12))
-    assert readings.brake_moment.u_step == pytest.approx(0.0196 / math.sqrt(12), rel=1e-9)
+    # no noise: the balance's u is its step alone, as a rectangular bias of the scale (step/sqrt(12),
+    # = 0.0196/sqrt(3) with the default step: the paper's accuracy read as a +-limit)
+    assert readings.brake_moment.u_step == pytest.approx(0.0196 / math.sqrt(3), rel=1e-9)
     assert readings.brake_moment.u == 0.0  # every reading equal: nothing scatters, nothing averages out
     assert readings.dynamometer_signal.u == pytest.approx(Adc().lsb_V / math.sqrt(12), rel=1e-9)
 

@@ -7,7 +7,7 @@ from unittest import mock
 import numpy as np
 import pytest
 
-from sensors.balance import STAND_A_ARM_M, TangentBalance, stand_a_balance
+from sensors.balance import STAND_A_ARM_M, STEP_IF_ACCURACY_IS_STEP_N, TangentBalance, stand_a_balance
 from sensors.calibration import TorqueArm, WeightSet, run_calibration
 from sensors.momentometer import stand_b_momentometer
 from sensors.noise import RandomWalkDrift, WhiteNoise
@@ -19,14 +19,18 @@ def test_balance_arm_and_resolution_from_paper():
     # seed 000 3.1.1: 0.049 N at the arm <-> 0.0196 N m  =>  arm 0.400 m
     assert STAND_A_ARM_M == pytest.approx(0.400)
     b = stand_a_balance()
-    assert b.resolution_N_m == pytest.approx(0.0196)
-    assert b.resolution_standard_uncertainty_N_m == pytest.approx(0.0196 / np.sqrt(12))
+    # default: "accuracy 0.049 N" read as a +-limit -> step 0.098 N, u(T2) = 0.0196/sqrt(3) = 0.0113 N m
+    assert b.resolution_N_m == pytest.approx(2 * 0.0196)
+    assert b.resolution_standard_uncertainty_N_m == pytest.approx(0.0196 / np.sqrt(3))
+    assert b.resolution_standard_uncertainty_N_m == pytest.approx(0.0113, abs=1e-4)
+    step = TangentBalance(resolution_N=STEP_IF_ACCURACY_IS_STEP_N)  # read as the scale step
+    assert step.resolution_standard_uncertainty_N_m == pytest.approx(0.0057, abs=1e-4)
 
 
 def test_balance_reading_hand_number():
-    # T = 1 N m -> 2.5 N at 0.4 m -> 51.02 steps of 0.049 N -> 51 steps -> 0.9996 N m
+    # T = 1 N m -> 2.5 N at 0.4 m -> 25.51 steps of 0.098 N -> 26 steps -> 1.0192 N m
     r = stand_a_balance().read(1.0)
-    assert r.moment_N_m[0] == pytest.approx(51 * 0.049 * 0.4)
+    assert r.moment_N_m[0] == pytest.approx(26 * 0.098 * 0.4)
     assert not r.over_range[0]
 
 
@@ -41,7 +45,7 @@ def test_ideal_balance_within_half_step_and_uniform_error():
 def test_balance_over_range_flagged():
     r = stand_a_balance().read(np.array([9.0, 11.0, -12.0]))  # full scale 25 N * 0.4 m = 10 N m
     assert r.over_range.tolist() == [False, True, True]
-    assert r.moment_N_m[1] == pytest.approx(np.rint(25.0 / 0.049) * 0.049 * 0.4)
+    assert r.moment_N_m[1] == pytest.approx(np.rint(25.0 / 0.098) * 0.098 * 0.4)
 
 
 def test_balance_noise_off_no_call_on_scatter():

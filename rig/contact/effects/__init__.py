@@ -10,16 +10,21 @@ from dataclasses import dataclass
 
 from rig.contact.effects.plastic_slip import PlasticSlip
 from rig.contact.effects.rolling_resistance import RollingResistance
-from rig.contact.effects.static_friction import StaticFriction
+from rig.contact.effects.static_friction import StaticFriction, StaticFrictionAfterFirstStick
 from rig.contact.effects.surface_inertia import SurfaceInertia
+from rig.errors import ParameterError
 
 # keyword of solve() -> effect component built from its value
 EFFECT_KEYWORDS = {
     "psi": PlasticSlip,
     "static_ratio": StaticFriction,
+    "static_ratio_after_first_stick": StaticFrictionAfterFirstStick,
     "inertia_number": SurfaceInertia,
     "rolling_length": RollingResistance,
 }
+# keyword -> the ContactEffects field its component fills (one field per kind of effect)
+_FIELDS = {"psi": "plastic_slip", "static_ratio": "static_friction", "static_ratio_after_first_stick": "static_friction",
+           "inertia_number": "surface_inertia", "rolling_length": "rolling_resistance"}
 
 
 @dataclass(frozen=True)
@@ -34,15 +39,12 @@ class ContactEffects:
     @classmethod
     def from_keywords(cls, **values: float) -> ContactEffects:
         """Build the named effects from solve() keywords (already checked to be known names)."""
-        built = {name: EFFECT_KEYWORDS[name](values[name]) for name in values}
-        return cls(
-            plastic_slip=built.get("psi"),
-            static_friction=built.get("static_ratio"),
-            surface_inertia=built.get("inertia_number"),
-            rolling_resistance=built.get("rolling_length"),
-        )
+        if "static_ratio" in values and "static_ratio_after_first_stick" in values:
+            raise ParameterError("static_ratio_after_first_stick", values["static_ratio_after_first_stick"],
+                                 "not together with static_ratio (two conventions of one effect)")
+        return cls(**{_FIELDS[name]: EFFECT_KEYWORDS[name](values[name]) for name in values})
 
     def names(self) -> list[str]:
         """Keywords of the effects that are on."""
-        return [k for k, f in zip(EFFECT_KEYWORDS, (self.plastic_slip, self.static_friction,
-                                                    self.surface_inertia, self.rolling_resistance)) if f is not None]
+        return [k for k, field in _FIELDS.items()
+                if (f := getattr(self, field)) is not None and type(f) is EFFECT_KEYWORDS[k]]

@@ -17,6 +17,7 @@ from rig import validate
 from rig.errors import ParameterError
 from rig.reduction.geometry import StandBGeometry
 from rig.stands.base import EffectSpec, ParameterSpec, SettingSpec
+from rig.stands.disc_roller import paper_alpha
 from sensors.momentometer import stand_b_momentometer
 
 _GEOMETRY = StandBGeometry()
@@ -109,6 +110,13 @@ EFFECTS: Mapping[str, EffectSpec] = {
     "recorder_noise": EffectSpec("white noise of the bridge amplifiers of F_T, F_V and T_Mo (sensors default)"),
     "dynamometer_drift": EffectSpec("random-walk zero drift of dynamometers 5 (sensors default)"),
     "calibration_weight_errors": EffectSpec("true calibration weights differ from nominal within +-0.098 N"),
+    paper_alpha.EFFECT: EffectSpec(
+        "the contact runs at the paper's stated alpha' (ca. 100 ... ca. 1500 for 9 ... 144 N, seed 000 3.2; a power "
+        "law in F_N through both ends) instead of eq. (21)'s Hertz estimate (10.6 ... 42.6 at mu = 0.8): b/a and p0 "
+        "stay Hertz's, the creep problem's compliance is m = alpha'_paper/alpha'_Hertz times Kalker's "
+        "(rig.stands.disc_roller.paper_alpha)",
+        paper_alpha.PARAMETERS,
+    ),
 }
 
 EFFECT_RANGES: Mapping[str, Mapping[str, tuple[float, float]]] = {
@@ -120,6 +128,7 @@ EFFECT_RANGES: Mapping[str, Mapping[str, tuple[float, float]]] = {
     "recorder_noise": {},
     "dynamometer_drift": {},
     "calibration_weight_errors": {},
+    paper_alpha.EFFECT: paper_alpha.RANGES,
 }
 
 SETTINGS: Mapping[str, SettingSpec] = {
@@ -194,6 +203,11 @@ class StandBParameters:
         b = math.sqrt(4.0 * f * self.roller_radius / (math.pi * 2.0 * self.half_length * self.contact_modulus))
         return b / self.half_length
 
+    def normal_force_for(self, b_over_a: float) -> float:
+        """F_N [N] of the Hertz line contact with this b/a (the inverse of :meth:`b_over_a`)."""
+        b = validate.number("b_over_a", b_over_a, 0.0, lo_open=True) * self.half_length
+        return math.pi * 2.0 * self.half_length * self.contact_modulus * b * b / (4.0 * self.roller_radius)
+
     def alpha_prime(self, normal_force: float) -> float:
         """alpha' = 10 mu (b/a) (v/w0)/R_x with v/w0 = R_c, R_x = R_r (eq. 21, seed notes 1.7, 3.2) [1]."""
         return 10.0 * self.mu * self.b_over_a(normal_force) * self.radius_c / self.roller_radius
@@ -238,6 +252,8 @@ def resolve_effects(effects: Mapping[str, Mapping[str, float]] | None) -> dict[s
     for needs, needed in (("gear_backlash", "loop_compliance"), ("swinging_drive", "contact_relaxation")):
         if needs in resolved and needed not in resolved:
             raise ParameterError("effects", sorted(resolved), f"{needs} together with {needed}")
+    if paper_alpha.EFFECT in resolved:
+        paper_alpha.check(resolved[paper_alpha.EFFECT])
     return resolved
 
 

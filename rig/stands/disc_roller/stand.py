@@ -18,6 +18,7 @@ from rig.errors import ParameterError
 from rig.logbook import LogSchema
 from rig.stands.base import ContactSpec, DriveMode, PointSimulation, Stand
 from rig.stands.contact_law import make_contact_law
+from rig.stands.disc_roller import paper_alpha
 from rig.stands.disc_roller import parameters as P
 from rig.stands.disc_roller.components import BearingFriction, ContactRelaxation, LoopCompliance, WormDrive
 from rig.stands.disc_roller.contact import ContactPoint, Law
@@ -77,21 +78,34 @@ class DiscRollerStand(Stand):
 
     # ---- components -------------------------------------------------------------------------
     def law_domain(self, b_over_a: float) -> TableDomain:
-        """Canonical (l/a, c/a, alpha') domain the stand evaluates the law in at this b/a."""
+        """Canonical (l/a, c/a, alpha') domain the stand evaluates the law in at this b/a (alpha' of eq. 21)."""
         p = self.params
         limit = p.rolling_point_limit
         c_max = p.pivot_distance * math.sin(P.SETTINGS["sigma_rad"].hi) / p.half_length
         alpha = 10.0 * p.mu * b_over_a * p.radius_c / p.roller_radius
         return TableDomain((-limit, limit), (-c_max, c_max), (alpha / ALPHA_BAND, alpha * ALPHA_BAND))
 
+    def alpha_factor(self, b_over_a: float) -> float:
+        """alpha' the contact runs at over eq. (21)'s [1]: 1, or alpha'_paper/alpha'_Hertz with the
+        effect paper_alpha_range (rig.stands.disc_roller.paper_alpha)."""
+        values = self.effects.get(paper_alpha.EFFECT)
+        if values is None:
+            return 1.0
+        force = self.params.normal_force_for(b_over_a)
+        return paper_alpha.paper_alpha_prime(values, force) / self.params.alpha_prime(force)
+
     def law(self, b_over_a: float) -> Law:
-        """The canonical contact law at b/a (built once per load; cached)."""
+        """The canonical contact law at b/a in eq. (21)'s alpha' (built once per load; cached)."""
         key = float(b_over_a)
         if key not in self._laws:
+            factor = self.alpha_factor(key)
             if self._law_factory is not None:
-                self._laws[key] = self._law_factory(key)
+                law = self._law_factory(key)
             else:
-                self._laws[key] = make_contact_law(self.contact, self.SHAPE, key, self.law_domain(key))
+                domain = self.law_domain(key)
+                law = make_contact_law(self.contact, self.SHAPE, key, TableDomain(
+                    domain.l_over_a, domain.c_over_a, tuple(factor * x for x in domain.alpha)))
+            self._laws[key] = law if factor == 1.0 else paper_alpha.AlphaScaledLaw(law, factor)
         return self._laws[key]
 
     def contact_point(self, settings: P.PointSettings) -> ContactPoint:

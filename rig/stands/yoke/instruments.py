@@ -11,7 +11,8 @@
 * Calibration once per run with weights at the dynamometer itself (seed 000 3.1.1: weights of
   +-0.098 N accuracy, 102/42.5 x 0.098 N = 0.235 N on F_y): the calibrated quantity is the force
   on the dynamometer [N]; the weights' uncertainty is inside the fit's covariance.
-* Tangent balance: the brake's reaction moment at the arm ``balance_arm`` (0.400 m), read at
+* Tangent balance: the brake's reaction moment at the arm ``balance_arm`` (0.400 m), rounded to the
+  scale step ``balance_step_N`` (the stated reading of the paper's accuracy, sensors.balance), read at
   ``balance_rate_Hz`` over the gate; the log's T2 is the mean of those readings.
 Random streams: sensors.effect_rng(seed, instrument, effect); per point the seed is derived from
 (run seed, point index) by :func:`point_seed`.
@@ -128,7 +129,7 @@ def point_instruments(params: YokeParameters, effects: Mapping[str, Mapping[str,
     return PointInstruments(
         counters=SpeedCounters(channels),
         dynamometer=dynamometer(effects, seed, s),
-        balance=TangentBalance(arm_m=g.balance_arm, resolution_N=g.balance_half_width, noise=balance_noise),
+        balance=TangentBalance(arm_m=g.balance_arm, resolution_N=params.balance_step_N, noise=balance_noise),
         run_offset_s=calibration_duration_s() + index * params.point_period_s,
         dynamometer_rate_Hz=params.dynamometer_rate_Hz,
         balance_rate_Hz=params.balance_rate_Hz,

@@ -73,6 +73,10 @@ PARAMETERS: Mapping[str, ParameterSpec] = MappingProxyType({
                                           "rig.stands.yoke.integration); rig accuracy studies it"),
     "balance_rate_Hz": ParameterSpec(1.0, "Hz", 0.05, 100.0, "[assumed] readings of the tangent balance per "
                                      "second (the operator reads the pointer)"),
+    "balance_step_N": ParameterSpec(0.098, "N", 1e-3, 1.0, "[assumed] scale step of the tangent balance at its "
+                                    "arm; 0.098 N reads the paper's 'accuracy 0.049 N' as a +-limit (u(T2) = "
+                                    "0.0113 N m, conservative default), 0.049 N as the step itself (0.0057 N m); "
+                                    "the log records it for the reduction (sensors.balance)"),
     "point_period_s": ParameterSpec(60.0, "s", 1.0, 3600.0, "[assumed] run time per operating point, places "
                                     "point k's gate at a fixed run time for the slow dynamometer drift"),
     "speed_ramp_s": ParameterSpec(1.0, "s", 0.01, 60.0, "[assumed] ramp time of the motor speed set-point "
@@ -114,6 +118,9 @@ EFFECTS: Mapping[str, EffectSpec] = MappingProxyType({
                                       {"std_V": (0.00625, "V")}),
     "calibration_weight_error": EffectSpec("true weights of the calibration pieces differ from nominal "
                                            "(uniform within +-0.098 N, seed 000)"),
+    "load_device": EffectSpec("an idealised load device on wheel 2 that can also drive it: negative brake "
+                              "set-points (rolling point at l < 0), same loop and regularisation as the brake; "
+                              "not in the paper; off: shoe brake 12 only brakes, T_set >= 0"),
 })
 
 # Valid ranges of the effect parameters (the scene checks names, the stand checks values).
@@ -127,7 +134,8 @@ EFFECT_RANGES: Mapping[str, tuple[float, float]] = MappingProxyType({
 
 SETTINGS: Mapping[str, SettingSpec] = MappingProxyType({
     "brake_setpoint_N_m": SettingSpec("N m", -8.0, 8.0, "set-point T_set of the load moment on wheel 2 (brake 12); "
-                                      "negative = the load device drives wheel 2 (see docs/stand-a.md)"),
+                                      "negative only with effects.load_device, which then drives wheel 2 "
+                                      "(docs/stand-a.md section 4)"),
     "normal_force_N": SettingSpec("N", 10.0, 500.0, "pressing force F_N of spring 5 (text: 96.2 N and 385 N)"),
     "delta_h_m": SettingSpec("m", 0.0, 1.5e-3, "yoke shift Delta h along axle 4 (text: 0 and 1.06 mm)"),
     "omega_1_set_rad_s": SettingSpec("rad/s", 1.0, 60.0, "speed set-point of wheel 1 (text: 240 rpm = 25.13 rad/s)"),
@@ -156,6 +164,7 @@ class YokeParameters:
     dynamometer_rate_Hz: float
     ode_tolerance_factor: float
     balance_rate_Hz: float
+    balance_step_N: float
     point_period_s: float
     speed_ramp_s: float
     slip_speed_eps_m_s: float

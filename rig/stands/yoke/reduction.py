@@ -14,8 +14,8 @@ instrument, so that the simulated instrument and the reduction agree by construc
   the noise ``balance_noise_std`` the balance states in the log: the step's bias V_b (rectangular,
   does not average out) and the scatter of the mean max(s^2, Delta^2/12 + sigma^2 - V_b)/n (the
   larger of what the readings show and what the instrument alone gives, so a moment that moves
-  within the gate is covered); 0.049 N is a scale *step* (sensors.balance), not the +-bound of
-  the paper's wording (docs/reduction.md section 4);
+  within the gate is covered); the step is the stated reading of the paper's "accuracy 0.049 N"
+  (stand parameter balance_step_N: 0.098 N = the +-limit reading by default, sensors.balance);
 * F_N from the settings with the stand's ``normal_force_u_N``; b/a = StandAGeometry.b_over_a(F_N).
 The contact law is the one the stand simulated with (rig.stands.yoke.laws), so a mu recovered
 from a synthetic log tests the method, not a mismatch of models. Outside the law's domain the

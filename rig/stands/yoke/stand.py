@@ -94,6 +94,10 @@ class YokeStand(Stand):
             if name not in settings:
                 raise ParameterError(name, "missing", f"a number in [{setting.lo:g}, {setting.hi:g}] {setting.unit}")
             out[name] = validate.number(name, settings[name], setting.lo, setting.hi)
+        if out["brake_setpoint_N_m"] < 0.0 and "load_device" not in self.effects:
+            raise ParameterError("brake_setpoint_N_m", out["brake_setpoint_N_m"],
+                                 f"[0, {self.SETTINGS['brake_setpoint_N_m'].hi:g}] N m: shoe brake 12 only brakes",
+                                 hint="name [effects.load_device] for an idealised device that drives wheel 2")
         return out
 
     def contact_for(self, settings: Mapping[str, float]) -> StandAContact:

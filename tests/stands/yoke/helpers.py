@@ -9,7 +9,7 @@ from tests.stands.yoke import standin
 SPEC = ContactSpec("rigid", None, 0.3)
 EFFECTS_ALL = ("drive_compliance", "brake_dynamics", "bearing_friction", "brake_friction_fluctuation",
                "dynamometer_noise", "dynamometer_drift", "balance_noise", "counter_pulse_noise",
-               "calibration_weight_error")
+               "calibration_weight_error", "load_device")
 INSTRUMENT_EFFECTS = ("dynamometer_noise", "dynamometer_drift", "balance_noise", "counter_pulse_noise",
                       "calibration_weight_error")
 

@@ -12,7 +12,7 @@ from rig.stands.base import ContactSpec, DriveMode
 from rig.stands.yoke.stand import YokeStand
 from tests.stands.yoke import helpers
 
-SWEEP = (-1.2, -0.6, -0.2, 0.3, 0.6, 1.0, 1.3)  # brake set-points [N m] moving l/a over about -1 .. +1
+SWEEP = (-1.2, -0.6, -0.2, 0.3, 0.6, 1.0, 1.3)  # set-points [N m] moving l/a over about -1 .. +1 (load_device)
 
 
 def write_sweep(st, path, brakes, *, seed=11, gate_time=20.0, **setting):
@@ -28,7 +28,7 @@ def write_sweep(st, path, brakes, *, seed=11, gate_time=20.0, **setting):
 
 def test_text_speed_data_at_l_near_0_from_the_counters():
     # seed 000 3.1.1: 240 rpm of wheel 1, w0/w1 = 1.77, w0 = 44 rad/s (seed notes 3.1: 1.77 x 25.13 = 44.5)
-    st = helpers.stand(("drive_compliance", "brake_dynamics"))
+    st = helpers.stand(("drive_compliance", "brake_dynamics", "load_device"))  # l = 0 needs T_set ~ -0.03 N m
     w1 = 240 * 2 * math.pi / 60
     s0 = helpers.settings(omega=w1)
     g = st.params.geometry
@@ -71,7 +71,7 @@ def test_with_a_real_surrogate_table_law(tmp_path, monkeypatch):
     # the same closed loop through rig.stands.contact_law (rigid model, small table cached in tmp_path)
     monkeypatch.setenv("RIG_CACHE_DIR", str(tmp_path / "cache"))
     spec = ContactSpec("rigid", None, 0.3, table_points=(21, 5, 5))
-    st = YokeStand({}, {"balance_noise": {}, "dynamometer_noise": {}}, spec, DriveMode.QUASI_STATIC)
+    st = YokeStand({}, {"balance_noise": {}, "dynamometer_noise": {}, "load_device": {}}, spec, DriveMode.QUASI_STATIC)
     frame = st.reduce_log(write_sweep(st, tmp_path / "log.h5", (-0.8, 0.4, 1.2), gate_time=20.0, force=385.0))
     assert _agree(frame, "l_over_a") == 3
     assert _agree(frame, "mu_v") == 3

@@ -56,7 +56,15 @@ def test_set_point_beyond_the_stall_moment_is_a_clear_error():
     with pytest.raises(ParameterError, match=r"brake_setpoint_N_m = 7.9 .*stall"):
         st_.start_point(0, helpers.settings(brake=7.9), None, 1)
     with pytest.raises(ParameterError, match=r"brake_setpoint_N_m = -3.0 .*the moments the contact can hold"):
-        st_.start_point(0, helpers.settings(brake=-3.0), None, 1)
+        helpers.stand(("load_device",)).start_point(0, helpers.settings(brake=-3.0), None, 1)
+
+
+def test_negative_set_point_needs_the_load_device():
+    """The paper's shoe brake only brakes (T_set >= 0); a device that drives wheel 2 is an effect a scene names."""
+    with pytest.raises(ParameterError, match=r"brake_setpoint_N_m = -0.5 .*only brakes.*effects.load_device"):
+        helpers.stand().start_point(0, helpers.settings(brake=-0.5), None, 1)
+    point = helpers.stand(("load_device",)).start_point(0, helpers.settings(brake=-0.5), None, 1)
+    assert float(point.target.contact.l) < 0.0  # the device drives wheel 2: the rolling point moves to l < 0
 
 
 def test_start_from_rest_and_a_stiff_coupling_settle_with_finite_results():

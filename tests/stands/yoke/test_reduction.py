@@ -37,7 +37,8 @@ def test_readings_come_from_the_record(logged):
     assert r.b_over_a == 2.0  # b/a = 2 at 385 N (seed 000)
     assert r.normal_force.value == 385.0 and r.normal_force.u == st.params.normal_force_u_N
     # the balance's 0.049 N step at the 0.4 m arm is a rectangular bias of the mean reading
-    assert (r.brake_moment.u, r.brake_moment.u_step) == (0.0, pytest.approx(0.0196 / math.sqrt(12)))
+    # default balance_step_N = 0.098 N: the paper's 0.0196 N m read as a +-limit, u = 0.0196/sqrt(3)
+    assert (r.brake_moment.u, r.brake_moment.u_step) == (0.0, pytest.approx(0.0196 / math.sqrt(3)))
     assert r.dynamometer.u_weights == 0.0  # the weights are inside the calibration's covariance
     cal = st.calibration(4)
     assert r.dynamometer.sensitivity == cal.sensitivity
