@@ -7,9 +7,12 @@ opens the page in the default browser unless --no-browser, and runs until Ctrl-C
 
 from __future__ import annotations
 
+import logging
 import threading
 import webbrowser
 from pathlib import Path
+
+from rig.errors import ParameterError
 
 DEFAULT_PORT = 8765
 
@@ -36,13 +39,13 @@ def main(args) -> int:
     from rig.lab.app import Lab, create_app
     from rig.lab.exercises import ClassFile
 
+    logging.getLogger("werkzeug").setLevel(logging.WARNING)  # no line per request on the console
     port = validate.integer("--port", args.port, 0, 65535)
     classfile = None if args.exercises is None else ClassFile.load(args.exercises)
     app = create_app(Lab(args.output, classfile))
     try:
         server = make_server(args.host, port, app, threaded=True)
     except OSError as error:
-        from rig.errors import ParameterError
         raise ParameterError("--port", port, f"a free port on {args.host} ({error.strerror})") from None
     url = f"http://{args.host}:{server.server_port}/"
     print(f"rig lab: serving {url} (Ctrl-C stops)", flush=True)

@@ -134,11 +134,14 @@ def _answers(value: object, name: str) -> dict[str, float]:
     return checked
 
 
-def _point(data: dict, session: LabSession, name: str = "point") -> int:
-    n = len(session.outcomes)
+def _point(data: dict, session: LabSession, where: str = "") -> int:
+    """The recorded point ``data["point"]`` (errors name ``where`` + "point")."""
+    value, n = data.get("point"), len(session.outcomes)
+    if "point" not in data:
+        raise ParameterError(f"{where}point", "missing", "the index of a recorded point")
     if n == 0:
-        raise ParameterError(name, rq.required(data, name), "a recorded point (none recorded yet)")
-    return validate.integer(name, rq.required(data, name), 0, n - 1)
+        raise ParameterError(f"{where}point", value, "a recorded point (none recorded yet)")
+    return validate.integer(f"{where}point", value, 0, n - 1)
 
 
 def _reduced_row(session: LabSession, point: int) -> dict:
@@ -265,9 +268,11 @@ def create_app(lab: Lab) -> Flask:
             results, rows = [], []
             for k, entry in enumerate(entries):
                 where = f"answers[{k}]"
-                entry = rq.body(entry, ("point", "values")) if isinstance(entry, dict) else rq.body(entry, ())
-                point = _point(dict(entry), session, f"{where}.point")
-                answers = _answers(rq.required(entry, "values"), f"{where}.values")
+                entry = rq.body(entry, ("point", "values"), where)
+                point = _point(dict(entry), session, f"{where}.")
+                if "values" not in entry:
+                    raise ParameterError(f"{where}.values", "missing", "a JSON object {output: number}")
+                answers = _answers(entry["values"], f"{where}.values")
                 verdict = judge(answers, _reduced_row(session, point))
                 truth = session.truth(point)
                 results.append({"point": point, **verdict, "truth": truth})
@@ -312,4 +317,5 @@ def _stream(transient, strobe: dict, version: int, ratio: float):
         yield f"event: frame\ndata: {json.dumps(frame)}\n\n"
         k = j
         time.sleep(FRAME_S)
-    yield f"event: settled\ndata: {json.dumps({'version': version, 'settle_s': transient.settle_s})}\n\n"
+    settled = {"version": version, "settle_s": transient.settle_s, "strobe_drift_marks_s": strobe["drift_marks_s"]}
+    yield f"event: settled\ndata: {json.dumps(settled)}\n\n"

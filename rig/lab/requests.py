@@ -14,11 +14,11 @@ from rig import validate
 from rig.errors import ParameterError
 
 
-def body(data: object, allowed: Iterable[str]) -> Mapping[str, object]:
-    """The request's JSON object with only ``allowed`` keys."""
+def body(data: object, allowed: Iterable[str], where: str = "body") -> Mapping[str, object]:
+    """The request's JSON object (or the part ``where`` of it) with only ``allowed`` keys."""
     if not isinstance(data, dict):
-        raise ParameterError("body", type(data).__name__, "a JSON object")
-    _known(data, allowed, "")
+        raise ParameterError(where, type(data).__name__, "a JSON object")
+    _known(data, allowed, "" if where == "body" else f"{where}.")
     return data
 
 

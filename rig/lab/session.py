@@ -134,18 +134,25 @@ class LabSession:
         return Transient(settle_s, t, np.asarray(train.omega_1(t, y), dtype=float), np.asarray(y[2], dtype=float),
                          np.asarray(train.brake_moment(t, y), dtype=float), np.asarray(theta_1), np.asarray(theta_2))
 
-    def strobe(self) -> dict[str, list[float]]:
-        """Disc 14 as the operator sees it: flash instants [s] and the apparent position of its marks
-        (mark coordinate modulo 1 [1]) at each flash, over the transient."""
+    def strobe(self) -> dict:
+        """Disc 14 as the operator sees it: flash instants [s], the apparent position of its marks
+        (mark coordinate modulo 1 [1]) at each flash over the transient, and the apparent drift of
+        the marks in the steady tail [marks/s] (0: they stand still; the flash-to-flash step taken
+        as the nearest whole number of marks, as the eye does)."""
         tr = self.transient
         if tr is None:
-            return {"t": [], "phase": []}
+            return {"t": [], "phase": [], "drift_marks_s": None}
         p = self.stand.params
         disc_14 = StrobeDisc(p.marks_2)
-        flashes = disc_14.crossing_times(tr.t, tr.theta_1 * self.strobe_ratio * p.marks_1 / p.marks_2)
+        flashes = disc_14.crossing_times(tr.t, tr.theta_1 * self.strobe_ratio * p.marks_2 / p.marks_1)
         u2 = np.interp(flashes, tr.t, disc_14.mark_coordinate(tr.theta_2))
-        step = max(1, flashes.size // TRACE_POINTS)
-        return {"t": flashes[::step].tolist(), "phase": np.mod(u2[::step], 1.0).tolist()}
+        steady = flashes >= tr.settle_s
+        drift = None
+        if np.count_nonzero(steady) >= 2:
+            step_marks = np.diff(u2[steady])
+            drift = float(np.sum(step_marks - np.round(step_marks)) / (flashes[steady][-1] - flashes[steady][0]))
+        every = max(1, flashes.size // TRACE_POINTS)
+        return {"t": flashes[::every].tolist(), "phase": np.mod(u2[::every], 1.0).tolist(), "drift_marks_s": drift}
 
     # ------------------------------------------------------------------------------ gate
 
