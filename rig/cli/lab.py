@@ -45,16 +45,12 @@ def main(args) -> int:
     app = create_app(Lab(args.output, classfile))
     try:
         server = make_server(args.host, port, app, threaded=True)
-    except OSError as error:
-        raise ParameterError("--port", port, f"a free port on {args.host} ({error.strerror})") from None
+    except (OSError, SystemExit) as error:  # werkzeug reports a taken port by printing and exiting
+        raise ParameterError("--port", port, f"a free port on {args.host} ({error})") from None
     url = f"http://{args.host}:{server.server_port}/"
     print(f"rig lab: serving {url} (Ctrl-C stops)", flush=True)
     if not args.no_browser:
         threading.Timer(0.5, webbrowser.open, (url,)).start()
-    try:
-        server.serve_forever()
-    except KeyboardInterrupt:
-        print("rig lab: stopped", flush=True)
-    finally:
-        server.server_close()
+    server.serve_forever()  # returns on Ctrl-C (werkzeug catches KeyboardInterrupt and closes the socket)
+    print("rig lab: stopped", flush=True)
     return 0
