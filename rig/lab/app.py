@@ -46,6 +46,7 @@ PRACTICE_MU = (0.3, 0.5)  # range of the hidden mu of a practice session [1]
 FRAME_S = 0.05  # real time between two frames of the live stream [s]
 RATIO_LIMITS = (0.1, 100.0)  # simulated time / real time of the live stream [1]
 MAX_SESSIONS = 1000
+GRADES_CSV = "grades.csv"  # the grade book, rewritten in the output folder after every submission
 
 
 class UnknownSession(LookupError):
@@ -59,7 +60,7 @@ class Lab:
     def __init__(self, out_dir: Path, classfile: ClassFile | None = None) -> None:
         self.out_dir = Path(out_dir)
         self.classfile = classfile
-        self.grades = GradeBook()
+        self.grades = GradeBook(self.out_dir / GRADES_CSV)
         self.sessions: dict[str, LabSession] = {}
         self.assigned: dict[str, tuple[str, Exercise]] = {}  # session id -> (student id, exercise)
         self._lock = threading.Lock()

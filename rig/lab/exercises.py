@@ -25,6 +25,7 @@ from __future__ import annotations
 import csv
 import hashlib
 import io
+import os
 import re
 import threading
 import tomllib
@@ -145,15 +146,23 @@ class ClassFile:
 
 
 class GradeBook:
-    """Every submitted value of every student (thread-safe); a resubmission replaces the earlier one."""
+    """Every submitted value of every student (thread-safe); a resubmission replaces the earlier one.
+    With a ``path``, the CSV is rewritten there after every submission (temporary file + rename), so
+    the grades outlive the server."""
 
-    def __init__(self) -> None:
+    def __init__(self, path: Path | None = None) -> None:
+        self.path = path
         self._rows: dict[tuple[str, str], list[dict]] = {}
         self._lock = threading.Lock()
 
     def submit(self, student: str, exercise: str, rows: list[dict]) -> None:
         with self._lock:
             self._rows[(student, exercise)] = [dict(student=student, exercise=exercise) | row for row in rows]
+        if self.path is not None:
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+            tmp = self.path.with_name(f".{self.path.name}.{os.getpid()}-{threading.get_ident()}.tmp")
+            tmp.write_text(self.csv(), encoding="utf-8")
+            os.replace(tmp, self.path)
 
     def csv(self) -> str:
         """The grade book as CSV (columns GRADE_COLUMNS), sorted by student, exercise, point."""

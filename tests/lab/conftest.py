@@ -103,9 +103,24 @@ def browser():
 
 
 @pytest.fixture(scope="session")
-def screenshots(tmp_path_factory) -> Path:
-    """Where the browser tests save their screenshots."""
+def screenshot(tmp_path_factory):
+    """shot(driver, name, element_id=None): save the page (or one element of it) as ``name``.png, in a
+    64-colour palette to keep the PNGs small."""
+    from PIL import Image
+
     folder = os.environ.get("RIG_LAB_SCREENSHOTS")
     path = Path(folder) if folder else tmp_path_factory.mktemp("lab-screenshots")
     path.mkdir(parents=True, exist_ok=True)
-    return path
+
+    def shot(driver, name: str, element_id: str | None = None) -> Path:
+        target = path / f"{name}.png"
+        if element_id is None:
+            driver.save_screenshot(str(target))
+        else:
+            driver.find_element("id", element_id).screenshot(str(target))
+        with Image.open(target) as image:
+            small = image.convert("RGB").quantize(colors=64)
+        small.save(target, optimize=True)
+        return target
+
+    return shot

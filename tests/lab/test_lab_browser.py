@@ -113,7 +113,7 @@ def test_page_and_every_asset_come_from_this_server_within_10_s(lab_server, brow
     assert lab_server.url.startswith("http://127.0.0.1:")
 
 
-def test_a_recorded_point_reduced_by_rig_reduce_equals_the_page_and_the_sheet_judges(lab_server, browser, screenshots):
+def test_a_recorded_point_reduced_by_rig_reduce_equals_the_page_and_the_sheet_judges(lab_server, browser, screenshot):
     _open(browser, lab_server.url)
     browser.find_element(By.ID, "open-practice").click()
     _settled(browser)
@@ -121,7 +121,7 @@ def test_a_recorded_point_reduced_by_rig_reduce_equals_the_page_and_the_sheet_ju
     assert "settled after" in browser.find_element(By.ID, "status").text
     assert "20× real time" in browser.find_element(By.ID, "ratio-shown").text
     point = _record(browser)
-    browser.save_screenshot(str(screenshots / "stand-a-recorded.png"))
+    screenshot(browser, "stand-a-recorded")
 
     counts = [int(browser.find_element(By.ID, f"counter-{k}").text) for k in (1, 2)]
     z1, z2 = (int(z) for z in browser.find_element(By.ID, "marks").text.split(","))
@@ -137,12 +137,12 @@ def test_a_recorded_point_reduced_by_rig_reduce_equals_the_page_and_the_sheet_ju
     assert len(browser.find_elements(By.CSS_SELECTOR, "#verdict .ok")) == len(OUTPUTS) + 1
     assert len(browser.find_elements(By.CSS_SELECTOR, "#results circle.student")) == 2
     assert len(browser.find_elements(By.CSS_SELECTOR, "#results circle.twin")) == 2
-    browser.save_screenshot(str(screenshots / "sheet-passed.png"))
+    screenshot(browser, "sheet-passed", "sheet")
 
     wrong_ratio = correct | {"i_k": correct["i_k"] * 1.02}
     assert _check(browser, point, wrong_ratio) == "back:speed_ratio"
     assert "speed ratio" in browser.find_element(By.ID, "verdict-text").text
-    browser.save_screenshot(str(screenshots / "sheet-sent-back.png"))
+    screenshot(browser, "sheet-sent-back", "answer-and-verdict")
     assert _check(browser, point, correct | {"nu_v": correct["nu_v"] * 1.5}) == "back:nu_lookup"
     assert _check(browser, point, correct | {"mu_T": correct["mu_T"] + 0.1}) == "back:friction"
     only_finals = {name: correct[name] for name in ("l_over_a", "c_over_a", "mu_v", "mu_T")}
@@ -183,7 +183,7 @@ def test_a_reload_and_a_second_tab_share_one_uncorrupted_session(lab_server, bro
     assert sorted(reduced) == [0, 1]
 
 
-def test_an_exercise_is_graded_and_exported(lab_server, browser, screenshots):
+def test_an_exercise_is_graded_and_exported(lab_server, browser, screenshot):
     student = "s-0042"
     mu, _seed = ClassFile.load(EXAMPLE_CLASS).get("A1").draw(student)
     _open(browser, lab_server.url)
@@ -205,7 +205,7 @@ def test_an_exercise_is_graded_and_exported(lab_server, browser, screenshots):
     browser.find_element(By.ID, "submit").click()
     _wait(browser, lambda d: _attr(d, "submitted", "data-done") == "yes")
     assert f"true μ = {mu:.4f}" in browser.find_element(By.ID, "graded-0").text
-    browser.save_screenshot(str(screenshots / "exercise-submitted.png"))
+    screenshot(browser, "exercise-submitted", "sheet")
 
     status, text = lab_server.request("GET", "api/grades.csv")
     assert status == 200
@@ -214,3 +214,4 @@ def test_an_exercise_is_graded_and_exported(lab_server, browser, screenshots):
     verdicts = {(r["point"], r["quantity"]): r["pass"] for r in rows}
     assert verdicts.pop(("1", "mu_v")) == "False" and set(verdicts.values()) == {"True"}
     assert {float(r["true"]) for r in rows if r["quantity"] in ("mu_v", "mu_T")} == {mu}
+    assert (lab_server.out_dir / "grades.csv").read_text() == text
