@@ -3,8 +3,8 @@
 The steps of the method, in order (docs/measurement-method.md), with the values a student
 enters for each:
 
-1. the speed ratio i_k = N2 z1/(N1 z2) from the counters of the common gate, eq. (29);
-2. the rolling point l/a, c/a from i_k and the stand's geometry, eqs. (30)-(31);
+1. the speed ratio i_k = N2 z1/(N1 z2) from the counters of the common gate;
+2. the rolling point l/a, c/a from i_k and the stand's geometry, eqs. (29)-(32);
 3. the coefficients nu_T, nu_v looked up from the contact law at (l/a, c/a, alpha');
 4. mu_v = F_y/(F_N nu_v) and mu_T = [T2 + F_y(Delta h - c)]/(F_N D), eqs. (33), (35).
 
@@ -21,8 +21,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 STEPS: tuple[tuple[str, str, tuple[str, ...]], ...] = (
-    ("speed_ratio", "the speed ratio i_k = N2 z1/(N1 z2), eq. (29)", ("i_k",)),
-    ("rolling_point", "the rolling point l/a, c/a from i_k, eqs. (30)-(31)", ("l_over_a", "c_over_a")),
+    ("speed_ratio", "the speed ratio i_k = N2 z1/(N1 z2) from the counters", ("i_k",)),
+    ("rolling_point", "the rolling point l/a, c/a from i_k, eqs. (29)-(32)", ("l_over_a", "c_over_a")),
     ("nu_lookup", "the nu lookups nu_T, nu_v at (l/a, c/a, alpha')", ("nu_T", "nu_v")),
     ("friction", "mu_v = F_y/(F_N nu_v), eq. (33), and mu_T from the moment balance, eq. (35)", ("mu_v", "mu_T")),
 )
