@@ -16,6 +16,7 @@ unknown session, 422 for settings at which the stand does not settle), never a 5
     POST /api/sessions/<id>/check        {point, answers: {output: value}} -> verdicts
     POST /api/sessions/<id>/save         {} -> the path of the saved log.h5
     POST /api/sessions/<id>/submit       {answers: [{point, values}]} -> grades and the truth
+    (in an exercise, the twin's reduction is sent only after the student has submitted)
     GET  /api/grades.csv                 every submitted value with reduced, true and pass/fail
 """
 
@@ -63,6 +64,7 @@ class Lab:
         self.grades = GradeBook(self.out_dir / GRADES_CSV)
         self.sessions: dict[str, LabSession] = {}
         self.assigned: dict[str, tuple[str, Exercise]] = {}  # session id -> (student id, exercise)
+        self.submitted: set[str] = set()  # ids of exercise sessions whose student has submitted
         self._lock = threading.Lock()
 
     def open(self, data: dict) -> LabSession:
@@ -97,6 +99,12 @@ class Lab:
         assigned = self.assigned.get(session.id)
         return None if assigned is None else assigned[1]
 
+    def reduced(self, session: LabSession) -> list[dict]:
+        """The twin's reduction as the page may see it: in an exercise, only after submission."""
+        if session.id in self.assigned and session.id not in self.submitted:
+            return []
+        return session.reduced()
+
     def get(self, ident: str) -> LabSession:
         with self._lock:
             if ident not in self.sessions:
@@ -104,13 +112,14 @@ class Lab:
             return self.sessions[ident]
 
 
-def _state(session: LabSession, exercise: Exercise | None) -> dict:
+def _state(lab: Lab, session: LabSession) -> dict:
+    exercise = lab.exercise_of(session)
     return {
         "id": session.id, "version": session.version, "stand": session.scene.stand,
         "settings": session.settings, "free": list(session.free), "strobe_ratio": session.strobe_ratio,
         "settle_s": None if session.transient is None else session.transient.settle_s,
         "readings": [session.readings(k) for k in range(len(session.outcomes))],
-        "reduced": session.reduced(),
+        "reduced": lab.reduced(session),
         "exercise": None if exercise is None else exercise.public(),
     }
 
@@ -192,13 +201,13 @@ def create_app(lab: Lab) -> Flask:
     def open_session():
         session = lab.open(body(("stand", "student", "exercise")))
         with session.lock:
-            return jsonify(_state(session, lab.exercise_of(session))), 201
+            return jsonify(_state(lab, session)), 201
 
     @app.get("/api/sessions/<ident>")
     def state(ident: str):
         session = lab.get(ident)
         with session.lock:
-            return jsonify(_state(session, lab.exercise_of(session)))
+            return jsonify(_state(lab, session))
 
     @app.post("/api/sessions/<ident>/controls")
     def controls(ident: str):
@@ -237,7 +246,7 @@ def create_app(lab: Lab) -> Flask:
         gate = rq.number(body(("gate_time_s",)), "gate_time_s", *GATE_LIMITS_S)
         with session.lock:
             readings = session.record(gate)
-            return jsonify(readings=readings, reduced=session.reduced(), version=session.version)
+            return jsonify(readings=readings, reduced=lab.reduced(session), version=session.version)
 
     @app.post("/api/sessions/<ident>/check")
     def check(ident: str):
@@ -283,6 +292,7 @@ def create_app(lab: Lab) -> Flask:
                                      tolerance=v["tolerance"], true=true, **{"pass": v["ok"]}))
             student, exercise = lab.assigned[session.id]
             lab.grades.submit(student, exercise.id, rows)
+            lab.submitted.add(session.id)
             return jsonify(results=results)
 
     @app.get("/api/grades.csv")

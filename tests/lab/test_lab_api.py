@@ -146,9 +146,11 @@ def test_hidden_values_are_not_sent_before_submission(lab_server):
     for text in texts:
         assert repr(mu) not in text and f"{mu:.6f}"[:7] not in text
         assert "bearing_friction" not in text and "true_" not in text and '"mu"' not in text
+    assert lab_server.request("GET", f"api/sessions/{sid}")[1]["reduced"] == []
     status, answer = lab_server.request("POST", f"api/sessions/{sid}/submit",
                                         {"answers": [{"point": 0, "values": GOOD_ANSWERS}]})
     assert status == 200 and answer["results"][0]["truth"]["mu"] == mu
+    assert [row["point"] for row in lab_server.request("GET", f"api/sessions/{sid}")[1]["reduced"]] == [0]
 
 
 def test_concurrent_requests_on_one_session_keep_it_consistent(lab_server):

@@ -196,14 +196,16 @@ def test_an_exercise_is_graded_and_exported(lab_server, browser, screenshot):
     for setpoint in ("0.4", "1.0"):
         _apply(browser, brake_setpoint_N_m=setpoint)
         _record(browser)
-    shown = _shown_reduction(browser)
-    for point, values in shown.items():
+    assert browser.execute_script("return lab.session.reduced.length") == 0  # not before submission
+    reduced = _rig_reduce(_save(browser))
+    for point, values in reduced.items():
         answers = {name: _significant(float(values[name])) for name in OUTPUTS}
         if point == 1:
             answers["mu_v"] += 0.2  # a wrong value, graded as such
         _check(browser, point, answers)
     browser.find_element(By.ID, "submit").click()
     _wait(browser, lambda d: _attr(d, "submitted", "data-done") == "yes")
+    assert len(browser.find_elements(By.CSS_SELECTOR, "#reduction tbody tr")) == 2  # released after submission
     assert f"true μ = {mu:.4f}" in browser.find_element(By.ID, "graded-0").text
     screenshot(browser, "exercise-submitted", "sheet")
 

@@ -245,6 +245,7 @@ async function check() {
 
 function showReduction() {
   const rows = lab.session.reduced || [];
+  if (lab.session.exercise && !rows.length) { $("verdict").innerHTML = "<p>In an exercise the twin's reduction is shown after you submit.</p>"; return; }
   const t = $("reduction");
   t.tHead.innerHTML = "<tr><th>point</th>" + OUTPUTS.map((n) => `<th>${n}</th><th>U95</th>`).join("") + "<th>note</th></tr>";
   t.tBodies[0].innerHTML = "";
@@ -295,6 +296,8 @@ async function submit() {
   try {
     const r = await api("POST", `/api/sessions/${lab.session.id}/submit`, { answers });
     $("submitted").innerHTML = r.results.map((p) => `<p id="graded-${p.point}">point ${p.point}: ${p.passed ? "passed" : "not passed"}; true μ = ${p.truth.mu.toFixed(4)}</p>`).join("");
+    lab.session.reduced = (await api("GET", `/api/sessions/${lab.session.id}`)).reduced;  // now released
+    showReduction();
     $("submitted").dataset.done = "yes";
   } catch (error) { $("submitted").innerHTML = `<p class="wrong">${error.field}: ${error.message}</p>`; }
 }
