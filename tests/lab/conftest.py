@@ -30,7 +30,7 @@ START_LIMIT_S = 10.0  # acceptance 1: the page is served within 10 s of start
 WARM_UP_S = 300.0  # the first settle may build the contact table
 CHROMIUM_FLAGS = ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
                   "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                  "--window-size=1000,1300")
+                  "--window-size=1000,1800")
 
 
 class LabServer:

@@ -195,13 +195,16 @@ function countGate(r) {
   });
 }
 
+// a reading without the binary rounding noise of its decimal steps (0.4018, not 0.40180000000000005)
+const tidy = (x) => +x.toPrecision(12);
+
 function showReadings(r, select) {
   $("counter-1").textContent = r.counts.wheel_1;
   $("counter-2").textContent = r.counts.wheel_2;
   $("marks").textContent = `${r.marks.wheel_1}, ${r.marks.wheel_2}`;
   $("dynamometer").textContent = `${r.dynamometer_V.mean.toPrecision(6)} ± ${r.dynamometer_V.std.toPrecision(2)} (${r.dynamometer_V.samples} samples, step ${r.dynamometer_V.resolution.toPrecision(3)})`;
   $("calibration").textContent = `${r.calibration.sensitivity_V_per_N.toPrecision(6)}, ${r.calibration.offset_V.toPrecision(4)}`;
-  $("balance").textContent = `${r.balance_N_m.T2} (readings ${r.balance_N_m.readings.join(", ")}; step ${r.balance_N_m.resolution.toPrecision(3)})`;
+  $("balance").textContent = `${tidy(r.balance_N_m.T2)} (readings ${r.balance_N_m.readings.map(tidy).join(", ")}; step ${r.balance_N_m.resolution.toPrecision(3)})`;
   if (select) $("answer-point").value = r.point;
   document.body.dataset.recorded = lab.session.readings.length;
 }
@@ -210,7 +213,7 @@ function addReadings(r) {
   const s = r.settings, row = $("points").tBodies[0].insertRow();
   row.id = `point-${r.point}`;
   for (const v of [r.point, s.normal_force, (s.delta_h * 1000).toFixed(3), s.brake_setpoint, r.counts.wheel_1,
-                   r.counts.wheel_2, r.gate_time_s, r.dynamometer_V.mean.toPrecision(6), r.balance_N_m.T2]) row.insertCell().textContent = v;
+                   r.counts.wheel_2, r.gate_time_s, r.dynamometer_V.mean.toPrecision(6), tidy(r.balance_N_m.T2)]) row.insertCell().textContent = v;
   const option = document.createElement("option");
   option.value = option.textContent = r.point;
   $("answer-point").append(option);
