@@ -39,7 +39,7 @@ from rig.lab.exercises import ClassFile, Exercise, GradeBook, student_id
 from rig.lab.scene_text import GATE_TIME_S
 from rig.lab.session import GATE_LIMITS_S, SHOWN, STROBE_RATIO_LIMITS, LabSession
 from rig.lab.sheet import OPTIONAL, REQUIRED, judge
-from rig.stands.yoke.parameters import PARAMETERS, SETTINGS
+from rig.stands.yoke.parameters import GEOMETRY_FIELDS, PARAMETERS, SETTINGS
 
 STANDS = ("yoke",)
 """Stands the lab operates (stand B, disc_roller, is not in the lab yet: docs/lab.md)."""
@@ -130,6 +130,8 @@ def _controls_spec() -> dict:
                      "gate_time_s": {"lo": GATE_LIMITS_S[0], "hi": GATE_LIMITS_S[1], "default": GATE_TIME_S},
                      "strobe_ratio": {"lo": STROBE_RATIO_LIMITS[0], "hi": STROBE_RATIO_LIMITS[1]},
                      "marks": {"wheel_1": PARAMETERS["marks_1"].default, "wheel_2": PARAMETERS["marks_2"].default},
+                     "geometry": {name: {"value": PARAMETERS[name].default, "unit": PARAMETERS[name].unit,
+                                         "source": PARAMETERS[name].source} for name in GEOMETRY_FIELDS},
                      "outputs": list(SHOWN), "required": list(REQUIRED), "optional": list(OPTIONAL)}}
 
 

@@ -108,21 +108,21 @@ class LabSession:
             if name not in self.free:
                 raise ParameterError(name, changes[name], f"left at {self.settings[name]:g}: this exercise fixes it "
                                      f"(free controls: {', '.join(self.free)})")
-        settings = self.stand.check_settings(self.settings | dict(changes))
-        self.settings = settings
-        return self._settle()
+        return self._settle(self.stand.check_settings(self.settings | dict(changes)))
 
     def set_strobe_ratio(self, ratio: float) -> None:
         """The stroboscope's flash rate as a multiple of disc 13's mark rate [1]."""
         self.strobe_ratio = validate.number("strobe_ratio", ratio, *STROBE_RATIO_LIMITS)
 
-    def _settle(self) -> Transient:
-        index = len(self.outcomes)
-        point = self.stand.start_point(index, self.settings, self.running, self.scene.seed)
+    def _settle(self, settings: Mapping[str, float]) -> Transient:
+        """Step from the running settings to ``settings`` and settle; the session changes only if it
+        settles (SettleTimeoutError otherwise)."""
+        point = self.stand.start_point(len(self.outcomes), settings, self.running, self.scene.seed)
         report = point.settle(SETTLE_TIMEOUT_S)
         self.transient = self._transient(point, report.duration_s)
         self._point = point
-        self.running = dict(self.settings)
+        self.settings = dict(settings)
+        self.running = dict(settings)
         self.version += 1
         return self.transient
 
@@ -161,7 +161,7 @@ class LabSession:
         keep the point; returns its readings."""
         gate_time = validate.number("gate_time_s", gate_time_s, *GATE_LIMITS_S)
         if self._point is None:
-            self._settle()  # first gate, or a second gate at the same settings: a new point
+            self._settle(self.settings)  # first gate, or a second gate at the same settings: a new point
         point, self._point = self._point, None
         outcome = point.read(point.gate(gate_time))
         self.outcomes.append(outcome)

@@ -111,6 +111,8 @@ def test_page_and_every_asset_come_from_this_server_within_10_s(lab_server, brow
     for address in loaded + linked:
         assert address.startswith(lab_server.url) or address.startswith("data:"), address
     assert lab_server.url.startswith("http://127.0.0.1:")
+    rows = browser.find_elements(By.CSS_SELECTOR, "#stand-data tbody tr")
+    assert len(rows) == 9 and any(r.get_attribute("textContent") == "a_m0.001215 m" for r in rows)
 
 
 def test_a_recorded_point_reduced_by_rig_reduce_equals_the_page_and_the_sheet_judges(lab_server, browser, screenshot):

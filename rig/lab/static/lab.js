@@ -309,6 +309,11 @@ async function submit() {
 
 async function init() {
   lab.spec = (await api("GET", "/api/stands")).yoke;
+  for (const [name, g] of Object.entries(lab.spec.geometry)) {
+    const row = $("stand-data").querySelector("tbody").insertRow();
+    row.insertCell().textContent = name; row.insertCell().textContent = `${+g.value.toPrecision(6)} ${g.unit}`;
+    row.title = g.source;
+  }
   const ex = await api("GET", "/api/exercises");
   for (const e of ex.exercises) { const o = document.createElement("option"); o.value = e.id; o.textContent = `${e.id}: ${e.title}`; $("exercise").append(o); }
   $("open-exercise").disabled = !ex.exercises.length;
