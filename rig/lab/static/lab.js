@@ -4,15 +4,33 @@
 
 const $ = (id) => document.getElementById(id);
 const OUTPUTS = ["i_k", "l_over_a", "c_over_a", "nu_T", "nu_v", "mu_v", "mu_T"];
-const lab = { spec: null, session: null, series: null, source: null, drift: null, answers: {}, shownTwin: {} };
+const lab = { spec: null, session: null, series: null, source: null, drift: null, answers: {}, shownTwin: {}, busy: 0 };
+const SYNC_MS = 2000;  // how often the page asks whether another tab changed the session
 
-async function api(method, path, body) {
+async function request(method, path, body) {
   const options = { method, headers: { "Content-Type": "application/json" } };
   if (body !== undefined) options.body = JSON.stringify(body);
   const response = await fetch(path, options);
   const data = await response.json();
   if (!response.ok) { const e = new Error(data.error); e.field = data.field; e.status = response.status; throw e; }
   return data;
+}
+
+async function api(method, path, body) {
+  lab.busy++;  // while this page waits for its own answer, sync() leaves the session alone
+  try { return await request(method, path, body); } finally { lab.busy--; }
+}
+
+async function sync() {
+  // another tab (or window) of the same session changed it: show the new state
+  if (!lab.session || lab.busy) return;
+  let state;
+  try { state = await request("GET", `/api/sessions/${lab.session.id}`); } catch (error) { return; }
+  if (lab.busy || !lab.session || state.id !== lab.session.id || state.version === lab.session.version) return;
+  const point = $("answer-point").value;
+  await enter(state);
+  if (point !== "") $("answer-point").value = point;
+  live();
 }
 
 function showError(error) {
@@ -27,7 +45,7 @@ async function openSession(body) {
     location.hash = "session=" + state.id;
     lab.answers = {}; lab.shownTwin = {};
     await enter(state);
-    await api("POST", `/api/sessions/${state.id}/controls`, { strobe_ratio: 1 });
+    lab.session.version = (await api("POST", `/api/sessions/${state.id}/controls`, { strobe_ratio: 1 })).version;
     live();
   } catch (error) { $("exercise-info").textContent = `${error.field || ""}: ${error.message}`; }
 }
@@ -77,6 +95,7 @@ async function apply() {
   try {
     const answer = await api("POST", `/api/sessions/${lab.session.id}/controls`, { settings });
     lab.session.settings = answer.settings;
+    lab.session.version = answer.version;
     showSettings(answer.settings, lab.session.free);
     live();
   } catch (error) { showError(error); setStatus("settled", "settled (unchanged)"); }
@@ -171,8 +190,9 @@ async function record() {
   $("record").disabled = true;
   try {
     const answer = await api("POST", `/api/sessions/${lab.session.id}/record`, { gate_time_s: Number($("gate_time").value) });
-    lab.session.readings.push(answer.readings);
+    lab.session.readings[answer.readings.point] = answer.readings;
     lab.session.reduced = answer.reduced;
+    lab.session.version = answer.version;
     await countGate(answer.readings);
     addReadings(answer.readings);
     showReadings(answer.readings, true);
@@ -210,6 +230,7 @@ function showReadings(r, select) {
 }
 
 function addReadings(r) {
+  if ($(`point-${r.point}`)) return;  // already shown (a sync from another tab came first)
   const s = r.settings, row = $("points").tBodies[0].insertRow();
   row.id = `point-${r.point}`;
   for (const v of [r.point, s.normal_force, (s.delta_h * 1000).toFixed(3), s.brake_setpoint, r.counts.wheel_1,
@@ -326,6 +347,7 @@ async function init() {
     try { await enter(await api("GET", `/api/sessions/${m[1]}`)); live(); }
     catch (error) { $("session-info").textContent = `${error.message}`; }
   }
+  setInterval(sync, SYNC_MS);
   document.body.dataset.ready = "yes";
 }
 
