@@ -35,14 +35,12 @@ from werkzeug.exceptions import HTTPException
 from rig import validate
 from rig.errors import ConvergenceError, ParameterError
 from rig.lab import requests as rq
-from rig.lab.exercises import ClassFile, Exercise, GradeBook, student_id
+from rig.lab.exercises import STANDS, ClassFile, Exercise, GradeBook, student_id
 from rig.lab.scene_text import GATE_TIME_S
 from rig.lab.session import GATE_LIMITS_S, SHOWN, STROBE_RATIO_LIMITS, LabSession
 from rig.lab.sheet import OPTIONAL, REQUIRED, judge
 from rig.stands.yoke.parameters import GEOMETRY_FIELDS, PARAMETERS, SETTINGS
 
-STANDS = ("yoke",)
-"""Stands the lab operates (stand B, disc_roller, is not in the lab yet: docs/lab.md)."""
 PRACTICE_MU = (0.3, 0.5)  # range of the hidden mu of a practice session [1]
 FRAME_S = 0.05  # real time between two frames of the live stream [s]
 RATIO_LIMITS = (0.1, 100.0)  # simulated time / real time of the live stream [1]

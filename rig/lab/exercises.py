@@ -42,6 +42,7 @@ from rig.stands.yoke.stand import YokeStand
 FILE_KEYS = ("title", "exercise")
 EXERCISE_KEYS = ("id", "title", "stand", "mu", "free", "start", "effects")
 STANDS = ("yoke",)
+"""Stands the lab operates (stand B, disc_roller, is not in the lab yet: docs/lab.md)."""
 ID_PATTERN = re.compile(r"[A-Za-z0-9_-]{1,64}")
 GRADE_COLUMNS = ("student", "exercise", "point", "quantity", "submitted", "reduced", "tolerance", "true", "pass")
 
@@ -97,10 +98,12 @@ def _exercise(entry: object, where: str) -> Exercise:
     lo = validate.number(f"{where}.mu[0]", mu[0], spec.lo, spec.hi)
     hi = validate.number(f"{where}.mu[1]", mu[1], lo, spec.hi)
     free = entry["free"]
-    if not isinstance(free, list):
+    if not isinstance(free, list) or not all(isinstance(name, str) for name in free):
         raise ParameterError(f"{where}.free", free, "a list of control names")
     validate.known_keys(f"{where}.free control", free, SETTINGS)
     start = entry.get("start", {})
+    if not isinstance(start, dict):
+        raise ParameterError(f"{where}.start", start, "a table [exercise.start] of settings")
     validate.known_keys(f"{where}.start setting", start, SETTINGS)
     start = {name: validate.number(f"{where}.start.{name}", v, SETTINGS[name].lo, SETTINGS[name].hi)
              for name, v in start.items()}

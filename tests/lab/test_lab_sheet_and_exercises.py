@@ -58,6 +58,9 @@ def test_a_students_hidden_mu_is_reproducible_and_inside_the_range():
     ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.5, 0.4]\nfree = []\n', "exercise[0].mu[1]"),
     ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\nfree = ["brake"]\n', "exercise[0].free control"),
     ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\n', "exercise[0].free"),
+    ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\nfree = [1]\n', "exercise[0].free"),
+    ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\nfree = []\nstart = 3\n',
+     "exercise[0].start"),
     ('[[exercise]]\nid = "A b"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\nfree = []\n', "exercise[0].id"),
     ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\nfree = []\n'
      '[exercise.start]\nnormal_force_N = 1.0\n', "exercise[0].start.normal_force_N"),
