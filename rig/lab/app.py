@@ -255,7 +255,11 @@ def create_app(lab: Lab) -> Flask:
         with session.lock:
             point = _point(data, session)
             answers = _answers(rq.required(data, "answers"), "answers")
-            return jsonify(point=point, **judge(answers, _reduced_row(session, point)))
+            verdict = judge(answers, _reduced_row(session, point))
+            if not lab.reduced(session):  # an exercise before submission: right or wrong, not the right value
+                for value in verdict["values"].values():
+                    value["reduced"] = value["tolerance"] = None
+            return jsonify(point=point, **verdict)
 
     @app.post("/api/sessions/<ident>/save")
     def save(ident: str):

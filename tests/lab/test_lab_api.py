@@ -140,6 +140,7 @@ def test_hidden_values_are_not_sent_before_submission(lab_server):
     lab_server.request("POST", f"api/sessions/{sid}/controls", {"settings": {"brake_setpoint_N_m": 0.6}})
     texts = [json.dumps(state), json.dumps(lab_server.request("POST", f"api/sessions/{sid}/record",
                                                               {"gate_time_s": 1.0})[1]),
+             json.dumps(lab_server.request("POST", f"api/sessions/{sid}/check", {"point": 0, "answers": GOOD_ANSWERS})[1]),
              json.dumps(lab_server.request("GET", f"api/sessions/{sid}")[1]),
              json.dumps(lab_server.request("GET", "api/exercises")[1]),
              lab_server.request("GET", f"api/sessions/{sid}/live?ratio=100")[1]]
@@ -147,6 +148,8 @@ def test_hidden_values_are_not_sent_before_submission(lab_server):
         assert repr(mu) not in text and f"{mu:.6f}"[:7] not in text
         assert "bearing_friction" not in text and "true_" not in text and '"mu"' not in text
     assert lab_server.request("GET", f"api/sessions/{sid}")[1]["reduced"] == []
+    verdict = json.loads(texts[2])
+    assert {v["reduced"] for v in verdict["values"].values()} == {None} and verdict["sent_back_to"]
     status, answer = lab_server.request("POST", f"api/sessions/{sid}/submit",
                                         {"answers": [{"point": 0, "values": GOOD_ANSWERS}]})
     assert status == 200 and answer["results"][0]["truth"]["mu"] == mu
