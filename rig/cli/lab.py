@@ -1,0 +1,56 @@
+"""``rig lab``: the virtual lab - stand A operated from a web page served on this machine (docs/lab.md).
+
+Serves the page and its JSON API on --host (default 127.0.0.1) and --port (0: any free port),
+opens the page in the default browser unless --no-browser, and runs until Ctrl-C. The line
+``rig lab: serving http://HOST:PORT/`` tells where (tests read it).
+"""
+
+from __future__ import annotations
+
+import logging
+import threading
+import webbrowser
+from pathlib import Path
+
+from rig.errors import ParameterError
+
+DEFAULT_PORT = 8765
+
+
+def add_parser(subparsers) -> None:
+    """Register ``rig lab``."""
+    parser = subparsers.add_parser("lab", help="the virtual lab: operate the stands from a web page",
+                                   description="Serve the virtual lab (stand A from a web page) until Ctrl-C.")
+    parser.add_argument("--host", default="127.0.0.1", help="address to listen on (default: 127.0.0.1)")
+    parser.add_argument("--port", type=int, default=DEFAULT_PORT,
+                        help=f"port (default: {DEFAULT_PORT}; 0: any free port)")
+    parser.add_argument("--no-browser", action="store_true", help="do not open the page in the default browser")
+    parser.add_argument("--exercises", type=Path, default=None, metavar="FILE",
+                        help="a teacher's exercise file (TOML, docs/lab.md)")
+    parser.add_argument("-o", "--output", type=Path, default=Path("lab-sessions"), metavar="DIR",
+                        help="folder of saved sessions (DIR/<session>/log.h5; default: ./lab-sessions)")
+    parser.set_defaults(handler=main)
+
+
+def main(args) -> int:
+    from werkzeug.serving import make_server  # the server's libraries load only for ``rig lab``
+
+    from rig import validate
+    from rig.lab.app import Lab, create_app
+    from rig.lab.exercises import ClassFile
+
+    logging.getLogger("werkzeug").setLevel(logging.WARNING)  # no line per request on the console
+    port = validate.integer("--port", args.port, 0, 65535)
+    classfile = None if args.exercises is None else ClassFile.load(args.exercises)
+    app = create_app(Lab(args.output, classfile))
+    try:
+        server = make_server(args.host, port, app, threaded=True)
+    except (OSError, SystemExit) as error:  # werkzeug reports a taken port by printing and exiting
+        raise ParameterError("--port", port, f"a free port on {args.host} ({error})") from None
+    url = f"http://{args.host}:{server.server_port}/"
+    print(f"rig lab: serving {url} (Ctrl-C stops)", flush=True)
+    if not args.no_browser:
+        threading.Timer(0.5, webbrowser.open, (url,)).start()
+    server.serve_forever()  # returns on Ctrl-C (werkzeug catches KeyboardInterrupt and closes the socket)
+    print("rig lab: stopped", flush=True)
+    return 0

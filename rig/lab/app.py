@@ -1,0 +1,336 @@
+"""The lab's web server: the page, a small JSON API and a stream of live values (Flask; docs/lab.md).
+
+Thin by design: each route reads its request (rig.lab.requests), calls the session
+(rig.lab.session), the sheet's judge (rig.lab.sheet) or the exercises (rig.lab.exercises), and
+returns JSON. Bad requests get 400 with ``{"error": message, "field": name}`` (404 for an
+unknown session, 422 for settings at which the stand does not settle), never a 500.
+
+    GET  /                               the page (assets under /static, all from this server)
+    GET  /api/stands                     the controls of each stand (names, units, ranges)
+    GET  /api/exercises                  the teacher's exercises (public part only)
+    POST /api/sessions                   {stand, student?, exercise?} -> a new session
+    GET  /api/sessions/<id>              the session's state (settings, readings, reduction)
+    POST /api/sessions/<id>/controls     {settings?: {name: SI value}, strobe_ratio?} -> settle
+    GET  /api/sessions/<id>/live?ratio=r the settling transient, streamed (server-sent events)
+    POST /api/sessions/<id>/record       {gate_time_s} -> the gate's readings and the reduction
+    POST /api/sessions/<id>/check        {point, answers: {output: value}} -> verdicts
+    POST /api/sessions/<id>/save         {} -> the path of the saved log.h5
+    POST /api/sessions/<id>/submit       {answers: [{point, values}]} -> grades and the truth
+    (in an exercise, the twin's reduction is sent only after the student has submitted)
+    GET  /api/grades.csv                 every submitted value with reduced, true and pass/fail
+"""
+
+from __future__ import annotations
+
+import json
+import secrets
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+from flask import Flask, Response, jsonify, request
+from werkzeug.exceptions import HTTPException
+
+from rig import validate
+from rig.errors import ConvergenceError, ParameterError
+from rig.lab import requests as rq
+from rig.lab.exercises import STANDS, ClassFile, Exercise, GradeBook, student_id
+from rig.lab.scene_text import GATE_TIME_S
+from rig.lab.session import GATE_LIMITS_S, SHOWN, STROBE_RATIO_LIMITS, LabSession
+from rig.lab.sheet import OPTIONAL, REQUIRED, judge
+from rig.stands.yoke.parameters import GEOMETRY_FIELDS, PARAMETERS, SETTINGS
+
+PRACTICE_MU = (0.3, 0.5)  # range of the hidden mu of a practice session [1]
+FRAME_S = 0.05  # real time between two frames of the live stream [s]
+RATIO_LIMITS = (0.1, 100.0)  # simulated time / real time of the live stream [1]
+MAX_SESSIONS = 1000
+GRADES_CSV = "grades.csv"  # the grade book, rewritten in the output folder after every submission
+
+
+class UnknownSession(LookupError):
+    """No session with this id (the server restarted, or a wrong link)."""
+
+
+class Lab:
+    """The server's state: sessions by id, the teacher's exercises (or None), the grade book, and
+    the folder saved logs go to."""
+
+    def __init__(self, out_dir: Path, classfile: ClassFile | None = None) -> None:
+        self.out_dir = Path(out_dir)
+        self.classfile = classfile
+        self.grades = GradeBook(self.out_dir / GRADES_CSV)
+        self.sessions: dict[str, LabSession] = {}
+        self.assigned: dict[str, tuple[str, Exercise]] = {}  # session id -> (student id, exercise)
+        self.submitted: set[str] = set()  # ids of exercise sessions whose student has submitted
+        self._lock = threading.Lock()
+
+    def open(self, data: dict) -> LabSession:
+        stand = rq.required(data, "stand")
+        if stand not in STANDS:
+            raise ParameterError("stand", stand, f"one of {', '.join(STANDS)} (stand B is not in the lab yet)")
+        ident = secrets.token_hex(8)
+        if "exercise" in data:
+            if self.classfile is None:
+                raise ParameterError("exercise", data["exercise"], "no exercise: the server has no teacher's file "
+                                     "(rig lab --exercises FILE)")
+            exercise = self.classfile.get(data["exercise"])
+            student = student_id(rq.required(data, "student"))
+            if exercise.stand != stand:
+                raise ParameterError("stand", stand, f"{exercise.stand!r}, the stand of exercise {exercise.id!r}")
+            mu, seed = exercise.draw(student)
+            session = LabSession(ident, seed=seed, mu=mu, effects=exercise.effects, free=exercise.free,
+                                 start=exercise.start, description=f"rig lab: exercise {exercise.id}, {student}")
+        else:
+            rng = np.random.default_rng()
+            session = LabSession(ident, seed=int(rng.integers(2**62)), mu=float(rng.uniform(*PRACTICE_MU)))
+            student = exercise = None
+        with self._lock:
+            if len(self.sessions) >= MAX_SESSIONS:
+                self.assigned.pop(self.sessions.pop(next(iter(self.sessions))).id, None)
+            self.sessions[ident] = session
+            if exercise is not None:
+                self.assigned[ident] = (student, exercise)
+        return session
+
+    def exercise_of(self, session: LabSession) -> Exercise | None:
+        assigned = self.assigned.get(session.id)
+        return None if assigned is None else assigned[1]
+
+    def reduced(self, session: LabSession) -> list[dict]:
+        """The twin's reduction as the page may see it: in an exercise, only after submission."""
+        if session.id in self.assigned and session.id not in self.submitted:
+            return []
+        return session.reduced()
+
+    def get(self, ident: str) -> LabSession:
+        with self._lock:
+            if ident not in self.sessions:
+                raise UnknownSession(ident)
+            return self.sessions[ident]
+
+
+def _state(lab: Lab, session: LabSession) -> dict:
+    exercise = lab.exercise_of(session)
+    return {
+        "id": session.id, "version": session.version, "stand": session.scene.stand,
+        "settings": session.settings, "free": list(session.free), "strobe_ratio": session.strobe_ratio,
+        "settle_s": None if session.transient is None else session.transient.settle_s,
+        "readings": [session.readings(k) for k in range(len(session.outcomes))],
+        "reduced": lab.reduced(session),
+        "exercise": None if exercise is None else exercise.public(),
+    }
+
+
+def _controls_spec() -> dict:
+    return {"yoke": {"settings": {name: {"unit": s.unit, "lo": s.lo, "hi": s.hi, "description": s.description}
+                                  for name, s in SETTINGS.items()},
+                     "gate_time_s": {"lo": GATE_LIMITS_S[0], "hi": GATE_LIMITS_S[1], "default": GATE_TIME_S},
+                     "strobe_ratio": {"lo": STROBE_RATIO_LIMITS[0], "hi": STROBE_RATIO_LIMITS[1]},
+                     "marks": {"wheel_1": PARAMETERS["marks_1"].default, "wheel_2": PARAMETERS["marks_2"].default},
+                     "geometry": {name: {"value": PARAMETERS[name].default, "unit": PARAMETERS[name].unit,
+                                         "source": PARAMETERS[name].source} for name in GEOMETRY_FIELDS},
+                     "outputs": list(SHOWN), "required": list(REQUIRED), "optional": list(OPTIONAL)}}
+
+
+def _answers(value: object, name: str) -> dict[str, float]:
+    if not isinstance(value, dict):
+        raise ParameterError(name, value, "a JSON object {output: number}")
+    given = {key: v for key, v in value.items() if v is not None}  # an optional value left empty
+    checked = rq.numbers({name: given}, name, REQUIRED + OPTIONAL)
+    for key in REQUIRED:
+        if key not in checked:
+            raise ParameterError(f"{name}.{key}", "missing", "a number")
+    return checked
+
+
+def _point(data: dict, session: LabSession, where: str = "") -> int:
+    """The recorded point ``data["point"]`` (errors name ``where`` + "point")."""
+    value, n = data.get("point"), len(session.outcomes)
+    if "point" not in data:
+        raise ParameterError(f"{where}point", "missing", "the index of a recorded point")
+    if n == 0:
+        raise ParameterError(f"{where}point", value, "a recorded point (none recorded yet)")
+    return validate.integer(f"{where}point", value, 0, n - 1)
+
+
+def _reduced_row(session: LabSession, point: int) -> dict:
+    return next(row["values"] for row in session.reduced() if row["point"] == point)
+
+
+def create_app(lab: Lab) -> Flask:
+    """The Flask application of ``lab``."""
+    app = Flask(__name__, static_folder="static", static_url_path="/static")
+    app.json.sort_keys = False
+
+    @app.errorhandler(ParameterError)
+    def bad_request(error: ParameterError):
+        return jsonify(error=str(error), field=error.name), 400
+
+    @app.errorhandler(UnknownSession)
+    def unknown_session(error: UnknownSession):
+        return jsonify(error=f"no session {error.args[0]!r} (the server restarted?): open a new one",
+                       field="session"), 404
+
+    @app.errorhandler(ConvergenceError)
+    def not_settled(error: ConvergenceError):
+        return jsonify(error=str(error), field="settings"), 422
+
+    @app.errorhandler(HTTPException)
+    def http_error(error: HTTPException):
+        return jsonify(error=error.description, field="body" if error.code == 400 else "url"), error.code
+
+    def body(allowed) -> dict:
+        return dict(rq.body(request.get_json(force=True, silent=True), allowed))
+
+    @app.get("/")
+    def page():
+        return app.send_static_file("index.html")
+
+    @app.get("/api/stands")
+    def stands():
+        return jsonify(_controls_spec())
+
+    @app.get("/api/exercises")
+    def exercises():
+        if lab.classfile is None:
+            return jsonify(title=None, exercises=[])
+        return jsonify(title=lab.classfile.title, exercises=[e.public() for e in lab.classfile.exercises.values()])
+
+    @app.post("/api/sessions")
+    def open_session():
+        session = lab.open(body(("stand", "student", "exercise")))
+        with session.lock:
+            return jsonify(_state(lab, session)), 201
+
+    @app.get("/api/sessions/<ident>")
+    def state(ident: str):
+        session = lab.get(ident)
+        with session.lock:
+            return jsonify(_state(lab, session))
+
+    @app.post("/api/sessions/<ident>/controls")
+    def controls(ident: str):
+        session = lab.get(ident)
+        data = body(("settings", "strobe_ratio"))
+        if not data:
+            raise ParameterError("settings", "missing", "settings and/or strobe_ratio")
+        settings = rq.numbers(data, "settings", SETTINGS) if "settings" in data else None
+        with session.lock:
+            if "strobe_ratio" in data:
+                session.set_strobe_ratio(rq.number(data, "strobe_ratio"))
+            if settings is not None:
+                for name, value in settings.items():  # range errors name the field as the page sent it
+                    spec = SETTINGS[name]
+                    if not spec.lo <= value <= spec.hi:
+                        raise ParameterError(f"settings.{name}", value, f"[{spec.lo:g}, {spec.hi:g}] {spec.unit}")
+                session.set_controls(settings)
+            elif session.transient is None:
+                session.set_controls({})
+            return jsonify(version=session.version, settings=session.settings, settle_s=session.transient.settle_s)
+
+    @app.get("/api/sessions/<ident>/live")
+    def live(ident: str):
+        session = lab.get(ident)
+        ratio = rq.number({"ratio": _query_number(request.args.get("ratio", "1"))}, "ratio", *RATIO_LIMITS)
+        with session.lock:
+            transient, strobe, version = session.transient, session.strobe(), session.version
+        if transient is None:
+            raise ParameterError("settings", "not set", "POST controls before opening the live stream")
+        return Response(_stream(transient, strobe, version, ratio), mimetype="text/event-stream",
+                        headers={"Cache-Control": "no-store"})
+
+    @app.post("/api/sessions/<ident>/record")
+    def record(ident: str):
+        session = lab.get(ident)
+        gate = rq.number(body(("gate_time_s",)), "gate_time_s", *GATE_LIMITS_S)
+        with session.lock:
+            readings = session.record(gate)
+            return jsonify(readings=readings, reduced=lab.reduced(session), version=session.version)
+
+    @app.post("/api/sessions/<ident>/check")
+    def check(ident: str):
+        session = lab.get(ident)
+        data = body(("point", "answers"))
+        with session.lock:
+            point = _point(data, session)
+            answers = _answers(rq.required(data, "answers"), "answers")
+            verdict = judge(answers, _reduced_row(session, point))
+            if not lab.reduced(session):  # an exercise before submission: right or wrong, not the right value
+                for value in verdict["values"].values():
+                    value["reduced"] = value["tolerance"] = None
+            return jsonify(point=point, **verdict)
+
+    @app.post("/api/sessions/<ident>/save")
+    def save(ident: str):
+        session = lab.get(ident)
+        body(())
+        with session.lock:
+            path = session.save(lab.out_dir / session.id)
+        return jsonify(path=str(path))
+
+    @app.post("/api/sessions/<ident>/submit")
+    def submit(ident: str):
+        session = lab.get(ident)
+        data = body(("answers",))
+        entries = rq.required(data, "answers")
+        if not isinstance(entries, list) or not entries:
+            raise ParameterError("answers", entries, "a non-empty list of {point, values}")
+        with session.lock:
+            if session.id not in lab.assigned:
+                raise ParameterError("session", session.id, "a session of an exercise (practice is not graded)")
+            results, rows = [], []
+            for k, entry in enumerate(entries):
+                where = f"answers[{k}]"
+                entry = rq.body(entry, ("point", "values"), where)
+                point = _point(dict(entry), session, f"{where}.")
+                if "values" not in entry:
+                    raise ParameterError(f"{where}.values", "missing", "a JSON object {output: number}")
+                answers = _answers(entry["values"], f"{where}.values")
+                verdict = judge(answers, _reduced_row(session, point))
+                truth = session.truth(point)
+                results.append({"point": point, **verdict, "truth": truth})
+                for name, v in verdict["values"].items():
+                    true = truth.get("mu") if name in ("mu_v", "mu_T") else truth.get(name)
+                    rows.append(dict(point=point, quantity=name, submitted=v["entered"], reduced=v["reduced"],
+                                     tolerance=v["tolerance"], true=true, **{"pass": v["ok"]}))
+            student, exercise = lab.assigned[session.id]
+            lab.grades.submit(student, exercise.id, rows)
+            lab.submitted.add(session.id)
+            return jsonify(results=results)
+
+    @app.get("/api/grades.csv")
+    def grades():
+        return Response(lab.grades.csv(), mimetype="text/csv",
+                        headers={"Content-Disposition": "attachment; filename=grades.csv"})
+
+    return app
+
+
+def _query_number(text: str) -> float | str:
+    """A query parameter as a number if it reads as one (else the text, which the check rejects)."""
+    try:
+        return float(text)
+    except ValueError:
+        return text
+
+
+def _stream(transient, strobe: dict, version: int, ratio: float):
+    """Server-sent events: frames of the transient paced at ``ratio`` x real time, then 'settled'."""
+    t = transient.t
+    flash_t, flash_phase = np.asarray(strobe["t"]), np.asarray(strobe["phase"])
+    start = time.monotonic()
+    k = 0
+    while k < t.size:
+        sim_now = (time.monotonic() - start) * ratio
+        j = max(int(np.searchsorted(t, sim_now, side="right")), k + 1)
+        f = int(np.searchsorted(flash_t, t[j - 1], side="right")) - 1
+        frame = {"version": version, "ratio": ratio, "settle_s": transient.settle_s,
+                 "t": t[k:j].tolist(), "omega_1": transient.omega_1[k:j].tolist(),
+                 "omega_2": transient.omega_2[k:j].tolist(), "brake_moment": transient.brake_moment[k:j].tolist(),
+                 "strobe_phase": float(flash_phase[f]) if f >= 0 else None}
+        yield f"event: frame\ndata: {json.dumps(frame)}\n\n"
+        k = j
+        time.sleep(FRAME_S)
+    settled = {"version": version, "settle_s": transient.settle_s, "strobe_drift_marks_s": strobe["drift_marks_s"]}
+    yield f"event: settled\ndata: {json.dumps(settled)}\n\n"

@@ -1,0 +1,90 @@
+"""The lab sheet's judge and the teacher's exercise file (no server, no browser)."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from rig.errors import ParameterError
+from rig.lab.exercises import ClassFile, GradeBook, student_id
+from rig.lab.sheet import ROUNDING, judge, tolerance
+from tests.lab.conftest import EXAMPLE_CLASS
+
+REDUCED = {"i_k": 0.8, "U95_i_k": 0.001, "l_over_a": 0.25, "U95_l_over_a": 0.02, "c_over_a": 0.0, "U95_c_over_a": 0.0,
+           "nu_T": -0.5, "U95_nu_T": 0.02, "nu_v": 0.05, "U95_nu_v": 0.002, "mu_v": 0.4, "U95_mu_v": 0.016,
+           "mu_T": 0.38, "U95_mu_T": 0.015}
+RIGHT = {"i_k": 0.8005, "l_over_a": 0.26, "c_over_a": 0.0, "nu_T": -0.51, "nu_v": 0.0505, "mu_v": 0.41, "mu_T": 0.37}
+
+
+def test_values_within_u95_pass_and_the_first_wrong_step_is_named():
+    assert judge(RIGHT, REDUCED)["passed"] is True
+    for name, step in (("i_k", "speed_ratio"), ("l_over_a", "rolling_point"), ("c_over_a", "rolling_point"),
+                       ("nu_T", "nu_lookup"), ("nu_v", "nu_lookup"), ("mu_v", "friction"), ("mu_T", "friction")):
+        wrong = RIGHT | {name: RIGHT[name] + 0.1}
+        verdict = judge(wrong, REDUCED)
+        assert verdict["sent_back_to"]["step"] == step and verdict["values"][name]["ok"] is False
+    # an error in i_k carried through every later value: sent back to the first step, not the last
+    assert judge({k: v * 1.1 for k, v in RIGHT.items()}, REDUCED)["sent_back_to"]["step"] == "speed_ratio"
+
+
+def test_the_tolerance_is_u95_with_a_rounding_floor():
+    assert tolerance(0.4, 0.016) == 0.016
+    assert tolerance(0.8, 1e-9) == pytest.approx(ROUNDING * 0.8)
+    assert tolerance(0.8, math.nan) == pytest.approx(ROUNDING * 0.8)
+    edge = REDUCED["mu_v"] + REDUCED["U95_mu_v"]
+    assert judge(RIGHT | {"mu_v": edge * (1 - 1e-12)}, REDUCED)["passed"]
+    assert not judge(RIGHT | {"mu_v": edge * (1 + 1e-6)}, REDUCED)["passed"]
+
+
+def test_an_output_the_reduction_could_not_give_is_not_passed():
+    verdict = judge(RIGHT, REDUCED | {"mu_T": None})
+    assert verdict["values"]["mu_T"] == {"entered": 0.37, "reduced": None, "tolerance": None, "ok": False}
+
+
+def test_a_students_hidden_mu_is_reproducible_and_inside_the_range():
+    exercise = ClassFile.load(EXAMPLE_CLASS).get("A1")
+    draws = [exercise.draw(f"s{k}") for k in range(200)]
+    assert exercise.draw("s7") == draws[7]
+    mus = [mu for mu, _ in draws]
+    assert all(0.30 <= mu <= 0.50 for mu in mus) and max(mus) - min(mus) > 0.15
+    assert len({seed for _, seed in draws}) == 200
+    assert "mu" not in exercise.public() and "effects" not in exercise.public()
+
+
+@pytest.mark.parametrize("text, field", [
+    ('title = "x"\n', "exercise"),
+    ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "disc_roller"\nmu = [0.3, 0.4]\nfree = []\n', "exercise[0].stand"),
+    ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.5, 0.4]\nfree = []\n', "exercise[0].mu[1]"),
+    ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\nfree = ["brake"]\n', "exercise[0].free control"),
+    ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\n', "exercise[0].free"),
+    ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\nfree = [1]\n', "exercise[0].free"),
+    ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\nfree = []\nstart = 3\n',
+     "exercise[0].start"),
+    ('[[exercise]]\nid = "A b"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\nfree = []\n', "exercise[0].id"),
+    ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\nfree = []\n'
+     '[exercise.start]\nnormal_force_N = 1.0\n', "exercise[0].start.normal_force_N"),
+    ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\nfree = []\n'
+     '[exercise.effects.bearing_friction]\nmoment_1_N_m = 5.0\n', "effects.bearing_friction.moment_1_N_m"),
+    ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\nfree = []\nhidden = 1\n',
+     "exercise[0] key"),
+])
+def test_a_bad_exercise_file_is_a_named_error(tmp_path, text, field):
+    path = tmp_path / "class.toml"
+    path.write_text(text)
+    with pytest.raises(ParameterError) as caught:
+        ClassFile.load(path)
+    assert caught.value.name == field
+
+
+def test_student_ids_and_the_grade_book():
+    with pytest.raises(ParameterError):
+        student_id("a b")
+    book = GradeBook()
+    row = dict(point=0, quantity="mu_v", submitted=0.4, reduced=0.41, tolerance=0.02, true=0.405, **{"pass": True})
+    book.submit("s2", "A1", [row])
+    book.submit("s1", "A1", [row | {"pass": False}])
+    book.submit("s1", "A1", [row])  # a resubmission replaces the earlier one
+    lines = book.csv().splitlines()
+    assert lines[0] == "student,exercise,point,quantity,submitted,reduced,tolerance,true,pass"
+    assert lines[1:] == ["s1,A1,0,mu_v,0.4,0.41,0.02,0.405,True", "s2,A1,0,mu_v,0.4,0.41,0.02,0.405,True"]
