@@ -56,7 +56,7 @@ class YokeStand(Stand):
         self.params = spec.resolve(parameters)
         self.law = laws.LawCache(contact, self.params.mu, law_factory)  # law(b_over_a, geometry) -> (law, domain)
         if not isinstance(drive, DriveMode):
-            raise ParameterError("drive", drive, "one of " + ", ".join(f"DriveMode.{m.name}" for m in DriveMode))
+            raise ParameterError("drive", drive, "one of " + ", ".join(repr(m.value) for m in DriveMode))
         self.effects = self.resolve_effects(effects)
         self._check_effects(drive)
         self.contact_spec = contact
@@ -68,7 +68,7 @@ class YokeStand(Stand):
         if drive is DriveMode.QUASI_STATIC:
             for name in DYNAMIC_ONLY:
                 if name in self.effects:
-                    raise ParameterError(f"effects.{name}", "named", "only with drive = DriveMode.DYNAMIC (the "
+                    raise ParameterError(f"effects.{name}", "named", "only with scene.drive = 'dynamic' (the "
                                          "quasi-static drive has no dynamics)")
         if "brake_friction_fluctuation" in self.effects and "brake_dynamics" not in self.effects:
             raise ParameterError("effects.brake_friction_fluctuation", "named without brake_dynamics",
