@@ -123,6 +123,22 @@ class Guard:
     denominator: str
 
 
+def _insignificant(guard: Guard, values: Mapping[str, float], u: Mapping[str, float], significance: float) -> str:
+    """Why the guard's ratio is not reported ("" when it is): its denominator lies within
+    ``significance`` u of zero, or its u is not finite - then the check cannot be decided, and a
+    NaN never passes for "within" (issue 14 item 6)."""
+    den, u_den = values[guard.denominator], u[guard.denominator]
+    if not math.isfinite(values[guard.ratio]):
+        return ""
+    if not math.isfinite(u_den):
+        return (f"the uncertainty of {guard.denominator} = {den:.3g} is not finite (a perturbed evaluation of the "
+                "chain failed), so whether the ratio's denominator is non-zero cannot be checked")
+    if abs(den) > significance * u_den:
+        return ""
+    return (f"|{guard.denominator}| = {abs(den):.3g} is within {significance:g} u = {significance * u_den:.3g} "
+            "of 0: the ratio's denominator is not known to be non-zero (hard case 8)")
+
+
 def reduce_point(evaluate: Evaluate, inputs: InputSet, start: Start, relative_step: float,
                  guards: tuple[Guard, ...], significance: float, driven: tuple[str, ...]) -> ReducedPoint:
     """Evaluate a chain at its inputs, propagate to first order, guard, budget, U95.
@@ -139,10 +155,8 @@ def reduce_point(evaluate: Evaluate, inputs: InputSet, start: Start, relative_st
     u_all = propagation.uncertainties
     u = {name: float(u_all[i]) if math.isfinite(values[name]) else math.nan for i, name in enumerate(names)}
     for guard in guards:
-        den, u_den = values[guard.denominator], u[guard.denominator]
-        if math.isfinite(values[guard.ratio]) and not abs(den) > significance * u_den:
-            why = (f"|{guard.denominator}| = {abs(den):.3g} is within {significance:g} u = {significance * u_den:.3g} "
-                   "of 0: the ratio's denominator is not known to be non-zero (hard case 8)")
+        why = _insignificant(guard, values, u, significance)
+        if why:
             lost = driven if guard.ratio == nominal.driver else (guard.ratio,)
             for name in lost:
                 values[name], u[name] = math.nan, math.nan

@@ -126,8 +126,8 @@ SETTINGS: Mapping[str, SettingSpec] = {
     "normal_force_N": SettingSpec("N", 1.0, 200.0, "dead-weight load F_N (text: 9, 21, 36, 144 N)"),
     "l_m": SettingSpec("m", -0.025, 0.025, "rolling-point offset l along the contact line, screw 19 (text: 0...+-20 mm)"),
     "sigma_rad": SettingSpec("rad", -0.2, 0.2, "twist of body 14, screw 15: c = e sin(sigma), eq. (36)"),
-    "speed_step": SettingSpec("1", 1.0, 3.0, "drive speed 1, 2, 3 = roller 24, 48, 72 rpm (text)"),
-    "direction": SettingSpec("1", -1.0, 1.0, "+1 forward, -1 reverse running (text: both directions)"),
+    "speed_step": SettingSpec("1", 1.0, 3.0, "drive speed 1, 2, 3 = roller 24, 48, 72 rpm (text)", (1.0, 2.0, 3.0)),
+    "direction": SettingSpec("1", -1.0, 1.0, "+1 forward, -1 reverse running (text: both directions)", (-1.0, 1.0)),
 }
 
 
@@ -268,10 +268,6 @@ def point_settings(settings: Mapping[str, float]) -> PointSettings:
     for name, spec in SETTINGS.items():
         if name not in settings:
             raise ParameterError(name, None, f"a value in [{spec.lo:g}, {spec.hi:g}] {spec.unit} (required per point)")
-        values[LOG_NAMES[name]] = validate.number(name, settings[name], spec.lo, spec.hi)
-    if values["speed_step"] not in (1.0, 2.0, 3.0):
-        raise ParameterError("speed_step", values["speed_step"], "1, 2 or 3 (roller 24, 48, 72 rpm)")
-    if values["direction"] not in (-1.0, 1.0):
-        raise ParameterError("direction", values["direction"], "+1 (forward) or -1 (reverse)")
+        values[LOG_NAMES[name]] = spec.check_choice(name, validate.number(name, settings[name], spec.lo, spec.hi))
     return PointSettings(values["normal_force"], values["l"], values["sigma"],
                          int(values["speed_step"]), int(values["direction"]))

@@ -25,6 +25,7 @@ from rig.stands.yoke import instruments, laws
 from rig.stands.yoke import parameters as spec
 from rig.stands.yoke.brake import critical_gain
 from rig.stands.yoke.contact_forces import StandAContact
+from rig.stands.yoke.integration import GATE_SAMPLE_RATE_HZ
 from rig.stands.yoke.point import YokePoint
 from rig.stands.yoke.reduction import reduce_log
 
@@ -50,6 +51,12 @@ class YokeStand(Stand):
     def resolve_effects(cls, effects: Mapping[str, Mapping[str, float]]) -> dict[str, dict[str, float]]:
         validate.known_keys("stand A effect", effects, spec.EFFECTS)
         return {name: spec.effect_values(name, given) for name, given in effects.items()}
+
+    @classmethod
+    def gate_sample_rate_Hz(cls, parameters: Mapping[str, float]) -> float:
+        """The true signals' rate, the dynamometer's or the balance's, whichever is highest [Hz]."""
+        p = spec.resolve(parameters)
+        return max(GATE_SAMPLE_RATE_HZ, p.dynamometer_rate_Hz, p.balance_rate_Hz)
 
     def __init__(self, parameters: Mapping[str, float], effects: Mapping[str, Mapping[str, float]],
                  contact: ContactSpec, drive: DriveMode, *, law_factory: laws.LawFactory | None = None) -> None:
