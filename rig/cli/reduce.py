@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from rig.errors import ParameterError
 from rig.runner import reduce_log_file
 
 
@@ -22,7 +23,13 @@ def add_parser(subparsers) -> None:
 
 
 def main(args) -> int:
-    reduction, files = reduce_log_file(args.log, args.output)
+    try:
+        reduction, files = reduce_log_file(args.log, args.output)
+    except ParameterError as error:
+        if error.name == "output folder" and args.output is None:  # the log's folder is read-only
+            raise ParameterError(error.name, error.value, error.valid,
+                                 hint=f"{error.hint}; write the outputs elsewhere with -o DIR") from None
+        raise
     print(f"reduced {len(reduction.table)} points of {args.log}: wrote {', '.join(str(f) for f in files)}")
     if reduction.problem:
         print(f"note: {reduction.problem}")

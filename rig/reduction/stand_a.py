@@ -158,7 +158,11 @@ def evaluate(
     kinematic = tuple(name for name in OUTPUTS if name != "F_y_N")
     n1, n2 = values["N1"], values["N2"]
     if min(n1, n2) < settings.min_counts:
-        why = f"counts N1 = {n1:g}, N2 = {n2:g} below min_counts = {settings.min_counts} (stall, hard case 2)"
+        counts = f"counts N1 = {n1:g}, N2 = {n2:g} below min_counts = {settings.min_counts}"
+        if n1 < settings.min_counts:  # wheel 1 is driven at its set speed: too few marks passed in the gate
+            why = f"{counts}: the gate of {readings.gate_time.value:g} s is too short for wheel 1's marks"
+        else:
+            why = f"{counts}: wheel 2 stalled (hard case 2)"
         return Evaluation(out, dict.fromkeys(kinematic, why), math.nan, 0)
     i_k = eq.ratio_from_counts(n1, n2, readings.marks_1, readings.marks_2)
     omega_1 = eq.angular_speed_from_counts(n1, readings.marks_1, reading_value(values, "T_gate", "s"))

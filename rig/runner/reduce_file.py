@@ -10,8 +10,8 @@ from __future__ import annotations
 from dataclasses import replace
 from pathlib import Path
 
-from rig.errors import ParameterError
-from rig.logbook import read_metadata
+from rig.errors import LogFormatError, ParameterError
+from rig.logbook import point_indices, read_metadata
 from rig.runner.figures import reduced_vs_truth_figure
 from rig.runner.outputs import REDUCED_FIGURE, output_folder, staged_outputs
 from rig.runner.reduction import Reduction, reduce_to_files
@@ -24,6 +24,9 @@ def reduce_log_file(log_path: Path, out_dir: Path | None = None, **parse_options
     the files written. ``parse_options`` go to rig.scenes.parse_scene (e.g. ``stand_class_of``)."""
     log_path = Path(log_path)
     metadata = read_metadata(log_path)
+    if not point_indices(log_path):
+        raise LogFormatError(f"{log_path}: the log holds no operating point (every point of its run failed?); "
+                             "nothing to reduce")
     scene = parse_scene(metadata.scene_toml, name=log_path.stem, source=f"{log_path} (the scene stored in the log)",
                         **parse_options)
     if not isinstance(scene, StandScene):
