@@ -24,6 +24,8 @@ import numpy as np
 
 from rig.reduction.budget import UncertaintyBudget, budget
 from rig.reduction.coverage import expanded_uncertainty
+from rig.errors import ParameterError
+from rig.reduction.drivers import Numerator, significant_drivers
 from rig.reduction.iteration import ReductionSettings, solve_with_drivers
 from rig.reduction.uncertainty import InputSet, Propagation, first_order
 
@@ -137,6 +139,25 @@ def _insignificant(guard: Guard, values: Mapping[str, float], u: Mapping[str, fl
         return ""
     return (f"|{guard.denominator}| = {abs(den):.3g} is within {significance:g} u = {significance * u_den:.3g} "
             "of 0: the ratio's denominator is not known to be non-zero (hard case 8)")
+
+
+def reduce_stand_point(evaluate: Callable[..., Evaluation], inputs: InputSet, numerators: Mapping[str, Numerator],
+                       guards: tuple[Guard, ...], driven: tuple[str, ...], settings: ReductionSettings,
+                       **chain: object) -> ReducedPoint:
+    """The step both stands' ``reduce`` share: choose the readings that may drive alpha'
+    (rig.reduction.drivers), bind the stand's chain ``evaluate(values, start, settings=..., **chain)``
+    and reduce the point (:func:`reduce_point`). ``chain`` must hold a callable ``coefficients``
+    (l/a, c/a, alpha') -> (nu_T, nu_v, nu_0)."""
+    if not callable(chain.get("coefficients")):
+        raise ParameterError("coefficients", chain.get("coefficients"),
+                             "a callable (l_over_a, c_over_a, alpha) -> (nu_T, nu_v, nu_0)")
+    drivers, no_driver = significant_drivers(inputs, numerators, settings.significance)
+
+    def bound(values: Mapping[str, float], start: Start) -> Evaluation:
+        return evaluate(values, start, settings=settings, **chain)
+
+    start = Start(settings.mu_start, drivers, True, no_driver)
+    return reduce_point(bound, inputs, start, settings.relative_step, guards, settings.significance, driven)
 
 
 def reduce_point(evaluate: Evaluate, inputs: InputSet, start: Start, relative_step: float,

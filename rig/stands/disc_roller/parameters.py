@@ -44,7 +44,8 @@ PARAMETERS: Mapping[str, ParameterSpec] = {
     "worm_ratio": ParameterSpec(20.0, "1", 5.0, 80.0, "[assumed] seed notes 4.2: 1440 rpm / 20 = 72 rpm"),
     "worm_efficiency": ParameterSpec(
         0.45, "1", 0.2, 0.95,
-        "[assumed] self-locking worm (text) needs a forward efficiency below 0.5; seed notes 4.2 say 0.6-0.75",
+        "[assumed] a self-locking worm (assumed: the seed names only 'the worm gear 22') needs a forward "
+        "efficiency below 0.5; seed notes 4.2 say 0.6-0.75",
     ),
     "motor_rated_torque_N_m": ParameterSpec(2.45, "N m", 0.1, 50.0, "[computed] 370 W at 1440 rpm (seed notes 4.2 motor)"),
     "motor_rated_slip": ParameterSpec(0.04, "1", 0.005, 0.2, "[assumed] 1440 of 1500 rpm synchronous"),
