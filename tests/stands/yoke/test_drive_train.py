@@ -55,7 +55,8 @@ def test_set_point_beyond_the_stall_moment_is_a_clear_error():
     st_ = helpers.stand()
     with pytest.raises(ParameterError, match=r"brake_setpoint_N_m = 7.9 .*stall"):
         st_.start_point(0, helpers.settings(brake=7.9), None, 1)
-    with pytest.raises(ParameterError, match=r"brake_setpoint_N_m = -3.0 .*the moments the contact can hold"):
+    with pytest.raises(ParameterError,
+                       match=r"brake_setpoint_N_m = -3.0 .*valid: at least -1\.[0-9]+ N m .*the moments the contact can hold"):
         st_.start_point(0, helpers.settings(brake=-3.0), None, 1)
 
 
