@@ -7,6 +7,10 @@ Scenes are small (n = 8, coarse tables, 0.1 s gates) so that each run takes a fe
 from __future__ import annotations
 
 import os
+import signal
+import subprocess
+import sys
+import time
 from pathlib import Path
 
 import h5py
@@ -16,6 +20,8 @@ import pytest
 from rig.cli import main
 from rig.logbook import layout as L
 from rig.logbook import staging_dir
+
+GIVE_UP_S = 120.0  # a safety net against a hung child, not a timing assertion
 
 STAND_A = """
 [scene]
@@ -177,6 +183,28 @@ def test_ctrl_c_is_one_line_and_exit_130(monkeypatch, capsys):
     code, _, err = run_cli(capsys, "run")
     assert code == 130
     assert err == "rig run: interrupted (run it again to resume)\n"
+
+
+@pytest.mark.skipif(os.name != "posix", reason="needs POSIX signals")
+def test_ctrl_c_during_a_run_is_one_line_and_keeps_the_staging_folder(tmp_path):
+    path = scene(tmp_path, STAND_A, {"[-0.5, 0.5]": "{ start = -0.5, stop = 0.5, num = 400 }"})
+    out = tmp_path / "out"
+    child = subprocess.Popen([sys.executable, "-m", "rig", "run", str(path), "-o", str(out)],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    try:
+        waited = 0.0
+        while not list((out / "log.h5.parts").glob("point_*.h5")):  # interrupt while the points run
+            assert child.poll() is None and waited < GIVE_UP_S, child.stderr.read() if child.poll() else "slow"
+            time.sleep(0.05)
+            waited += 0.05
+        child.send_signal(signal.SIGINT)
+        _, err = child.communicate(timeout=GIVE_UP_S)
+    finally:
+        if child.poll() is None:
+            child.kill()
+    assert child.returncode == 130
+    assert err == "rig run: interrupted (run it again to resume)\n"
+    assert staging_dir(out / "log.h5").is_dir()  # kept: running the scene again resumes
 
 
 # ---------------------------------------------------------------- item 8: OS errors
