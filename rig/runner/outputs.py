@@ -46,7 +46,8 @@ def output_folder(out_dir: object) -> Path:
     try:
         folder.mkdir(parents=True, exist_ok=True)
     except FileExistsError:
-        raise ParameterError("output folder", str(folder), "a folder or a new name (a file of that name exists)") from None
+        raise ParameterError("output folder", str(folder),
+                             "a folder or a new name (a file of that name exists)") from None
     except OSError as error:
         raise ParameterError("output folder", str(folder), "a folder this user can create and write",
                              hint=error.strerror or str(error)) from None

@@ -11,8 +11,9 @@ The logbook's records are read-only mappings (``types.MappingProxyType``), which
 handle; a reducer registered on multiprocessing's pickler (only there) sends them as dicts.
 An error inside a worker comes back as :class:`PointFailure`: a named error (rig.errors.RigError)
 is raised in the parent as it was raised in the worker, as a serial run raises it; any other
-comes back as text with its traceback and is raised as :class:`WorkerError` naming the point. ``simulate_point`` and
-``accept`` are shared with the Dask path (rig.runner.dask_pool).
+comes back as text with its traceback and is raised as :class:`WorkerError` naming the point.
+Workers ignore Ctrl-C (the parent reports it). ``simulate_point`` and ``accept`` are shared with
+the Dask path (rig.runner.dask_pool).
 """
 
 from __future__ import annotations

@@ -1,10 +1,11 @@
 """A stand scene from start to outputs: log.h5, reduced.csv, the figure and summary.txt in one folder.
 
-Order: open the log (resuming an interrupted run of the same scene) -> build the stand with the
-scene's effects only -> calibrate once -> sweep the points not yet logged, writing each as it
-finishes -> remove the previous run's outputs -> finalize log.h5 -> reduce (reduced.csv and
-``/reduced`` in the log) -> figures -> summary.txt, the outputs staged and moved into the folder
-whole (rig.runner.outputs). The points run in this process, on a local process pool (``jobs`` > 1) or on a
+Order: build the stand with the scene's effects only (an error there leaves nothing) -> open the
+log (resuming an interrupted run of the same scene) -> calibrate once -> sweep the points not
+yet logged, writing each as it finishes -> remove the previous run's outputs -> finalize log.h5
+-> reduce (reduced.csv and ``/reduced`` in the log) -> figures -> summary.txt, the outputs
+staged and moved into the folder whole (rig.runner.outputs). The points run in this process,
+on a local process pool (``jobs`` > 1) or on a
 Dask cluster (``scheduler``: a scheduler's address; rig.runner.dask_pool). A point that does
 not settle is reported (policy: rig.runner.operator). A named error of the scene (a
 ParameterError, ConvergenceError, ... raised while calibrating or inside a point) removes the
@@ -23,9 +24,9 @@ from rig.campaigns import paper_figure
 from rig.errors import RigError
 from rig.logbook import LogWriter, RunMetadata, point_indices, read_point, utc_timestamp
 from rig.runner.dask_pool import check_scheduler
-from rig.runner.pool import WorkerError
 from rig.runner.figures import reduced_vs_truth_figure
 from rig.runner.outputs import REDUCED_FIGURE, SUMMARY_NAME, output_folder, remove_stale, staged_outputs
+from rig.runner.pool import WorkerError
 from rig.runner.reduction import Reduction, read_truth_if_any, reduce_to_files
 from rig.runner.summary import RunFacts, summary_text
 from rig.runner.sweep import SETTLE_TRUTH, Failure, run_sweep
