@@ -7,6 +7,7 @@ previous scene beside the new log; a rerun completes the folder.
 
 from __future__ import annotations
 
+import shutil
 import signal
 import subprocess
 import sys
@@ -47,12 +48,20 @@ def _check_consistent(folder: Path) -> None:
         assert _outputs(folder) == set(listed) - {"log.h5"}
 
 
-@pytest.mark.skipif(not hasattr(signal, "SIGKILL"), reason="needs POSIX SIGKILL")
-@pytest.mark.parametrize("kill", ["draw:1", "rename:1", "rename:3"])
-def test_kill_in_the_output_phase_leaves_whole_matching_outputs(tmp_path, kill):
-    folder = tmp_path / "run"
+@pytest.fixture(scope="module")
+def scene_a_folder(tmp_path_factory) -> Path:
+    """A folder with the complete run of scene variant "a" (copied by each test)."""
+    folder = tmp_path_factory.mktemp("a") / "run"
     assert _child(folder, "a", "none") == 0
     assert _outputs(folder) == {"reduced.csv", "reduced_vs_truth.png", "summary.txt"}
+    return folder
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGKILL"), reason="needs POSIX SIGKILL")
+@pytest.mark.parametrize("kill", ["draw:1", "rename:3"])  # while drawing; before summary.txt moves in
+def test_kill_in_the_output_phase_leaves_whole_matching_outputs(tmp_path, kill, scene_a_folder):
+    folder = tmp_path / "run"
+    shutil.copytree(scene_a_folder, folder)
     assert _child(folder, "b", kill) == -signal.SIGKILL  # another scene into the used folder, killed
     _check_consistent(folder)
     assert _outputs(folder) != {"reduced.csv", "reduced_vs_truth.png", "summary.txt"}  # not the old set
