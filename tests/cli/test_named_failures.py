@@ -260,8 +260,9 @@ def test_reduce_of_a_log_in_a_read_only_folder(tmp_path, capsys, monkeypatch, st
     log = folder / "log.h5"
     log.write_bytes(stand_a_log.read_bytes())
     read_only(monkeypatch, folder)
-    code, _, err = run_cli(capsys, "reduce", log)  # outputs into the read-only folder: named
-    assert_named(code, err, "reduce", "output folder", "Permission denied", "-o DIR")
+    code, out, err = run_cli(capsys, "reduce", log)  # outputs into the read-only folder: named
+    assert_named(code, err, "reduce", "output folder", "Permission denied", "-o DIR", "printed above")
+    assert "mu_T" in out and len(out.strip().splitlines()) == 3  # the values are reported: header + 2 points
     code, out, err = run_cli(capsys, "reduce", log, "-o", tmp_path / "elsewhere")
     assert code == 0, err
     assert "reduced table not stored in log.h5" in out  # the values are still reported, in reduced.csv
