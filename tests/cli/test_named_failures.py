@@ -115,6 +115,20 @@ def test_a_stall_inside_a_point_is_named_and_leaves_no_staging_folder(tmp_path, 
     assert not staging_dir(tmp_path / "out" / "log.h5").exists() and not (tmp_path / "out" / "log.h5").exists()
 
 
+def test_stand_a_at_the_lowest_mu_reduces_with_true_reasons(tmp_path, capsys):
+    # mu = 0.1 is the end of stand A's range: the reduction's perturbed evaluations left the
+    # contact law's alpha' domain (u = NaN, "within 2 u = nan"); the domain now has a margin
+    path = scene(tmp_path, STAND_A, {"mu = 0.4": "mu = 0.1", "[-0.5, 0.5]": "[-0.3, 0.3]"})
+    code, _, err = run_cli(capsys, "run", path, "-o", tmp_path / "out")
+    assert code == 0, err
+    table = pd.read_csv(tmp_path / "out" / "reduced.csv", index_col="point")
+    assert table["l_over_a"].notna().all() and table["u_l_over_a"].notna().all()
+    for name in ("mu_v", "mu_T"):
+        for value, u, reason in zip(table[name], table[f"u_{name}"], table["reason"].fillna("")):
+            assert (pd.notna(value) and pd.notna(u)) or f"{name}:" in reason or f"{name} " in reason
+    assert not table["reason"].fillna("").str.contains("nan|not finite|domain").any(), table["reason"].tolist()
+
+
 @pytest.mark.parametrize(("change", "words"), [
     ({"direction = 1": "direction = 0"}, ("procedure.fixed.direction = 0.0", "one of -1, 1")),
     ({"direction = 1": "direction = 0.5"}, ("procedure.fixed.direction = 0.5", "one of -1, 1")),
