@@ -105,7 +105,10 @@ def _write_outputs(scene: StandScene, stand: Stand, log_path: Path, facts: RunFa
     names of the run's files and the summary text."""
     files, problems = [LOG_NAME], []
     reduction: Reduction | None = None
-    if scene.outputs.reduce:
+    empty = not point_indices(log_path)
+    if scene.outputs.reduce and empty:
+        problems.append("not reduced: the log holds no operating point (every point failed)")
+    if scene.outputs.reduce and not empty:
         reduction = reduce_to_files(stand, log_path, scene.contact, staging)
         files.append(reduction.csv.name)
         if reduction.problem:
