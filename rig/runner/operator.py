@@ -82,12 +82,11 @@ def _one_point(env: simpy.Environment, stand: Stand, point: PlannedPoint, proced
 
 
 def operate(env: simpy.Environment, stand: Stand, points: Iterable[PlannedPoint], procedure: Procedure, seed: int,
-            deliver: Callable[[PointResult], None],
-            raised: list[BaseException] | None = None) -> Generator[simpy.Event, None, None]:
+            deliver: Callable[[PointResult], None], raised: list[Exception]) -> Generator[simpy.Event, None, None]:
     """The operator process: ``deliver`` receives each finished point in order.
 
-    ``raised``: when given, an error of a point (or of ``deliver``) is appended to it and ends
-    the process, instead of propagating through simpy (which rebuilds an exception as
+    An error of a point (or of ``deliver``) is appended to ``raised`` and ends the process,
+    instead of propagating through simpy (which rebuilds an exception as
     ``type(error)(*error.args)`` - a TypeError for errors whose constructor takes other arguments).
     """
     try:
@@ -97,8 +96,6 @@ def operate(env: simpy.Environment, stand: Stand, points: Iterable[PlannedPoint]
             if result.failure is not None and procedure.on_settle_timeout is TimeoutPolicy.STOP:
                 return
     except Exception as error:  # noqa: BLE001 - handed to run_operator, raised there unchanged
-        if raised is None:
-            raise
         raised.append(error)
 
 
@@ -108,7 +105,7 @@ def run_operator(stand: Stand, points: Iterable[PlannedPoint], procedure: Proced
 
     An error inside a point propagates as it was raised (type, message and attributes)."""
     env = simpy.Environment()
-    raised: list[BaseException] = []
+    raised: list[Exception] = []
     env.process(operate(env, stand, points, procedure, seed, deliver, raised))
     env.run()
     if raised:

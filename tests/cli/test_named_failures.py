@@ -176,7 +176,7 @@ def test_a_gate_longer_than_the_recorder_holds_is_named(tmp_path, capsys, text, 
 # ---------------------------------------------------------------- item 5: stand B over its whole mu range
 
 
-@pytest.mark.parametrize("mu", [0.05, 2.0])
+@pytest.mark.parametrize("mu", [0.05, 1.2, 2.0])  # 1.2: the old domain ended at the start alpha'
 def test_stand_b_reduces_at_the_ends_of_its_mu_range(tmp_path, capsys, mu):
     path = scene(tmp_path, STAND_B, {"mu = 0.8": f"mu = {mu}"})
     code, _, err = run_cli(capsys, "run", path, "-o", tmp_path / "out")
