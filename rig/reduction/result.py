@@ -22,9 +22,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rig.errors import ParameterError
 from rig.reduction.budget import UncertaintyBudget, budget
 from rig.reduction.coverage import expanded_uncertainty
-from rig.errors import ParameterError
 from rig.reduction.drivers import Numerator, significant_drivers
 from rig.reduction.iteration import ReductionSettings, solve_with_drivers
 from rig.reduction.uncertainty import InputSet, Propagation, first_order
