@@ -34,7 +34,7 @@ class ParameterError(NamedError, ValueError):
     """A parameter or input is outside its valid range (or not a number where one is needed).
 
     ``ParameterError(name, value, valid, hint="")`` keeps ``name`` (the parameter), ``value``
-    (what was given) and ``valid`` (the valid range, in words) for callers that re-raise with
+    (what was given), ``valid`` (the valid range, in words) and ``hint`` for callers that re-raise with
     more context.
     """
 
@@ -42,6 +42,7 @@ class ParameterError(NamedError, ValueError):
         self.name = name
         self.value = value
         self.valid = valid
+        self.hint = hint
         message = f"{name} = {value!r} is not valid; valid: {valid}"
         if hint:
             message += f" ({hint})"

@@ -2,7 +2,9 @@
 
 A subcommand module defines ``add_parser(subparsers)`` (which sets ``handler``) and the handler
 returns an exit status. Errors friction-rig raises on purpose (bad input, damaged logs,
-non-convergence) are printed as one line and give exit status 2; library code never exits.
+non-convergence) and operating-system errors (a file that cannot be read or written) are
+printed as one line and give exit status 2; Ctrl-C prints one line and gives 130. Library code
+never exits. The rules are listed in docs/scenes.md ("Exit status and errors").
 """
 
 from __future__ import annotations
@@ -13,6 +15,9 @@ import sys
 
 from rig import __version__
 from rig.errors import RigError
+
+EXIT_INTERRUPTED = 130
+"""Exit status after Ctrl-C (128 + SIGINT, as shells report it)."""
 
 SUBCOMMANDS = ("run", "scenes", "reduce", "compare", "accuracy", "lab")
 
@@ -27,7 +32,11 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = build_parser()
+    try:
+        parser = build_parser()  # imports the subcommands (numpy, scipy, ...): Ctrl-C may come here too
+    except KeyboardInterrupt:
+        print("rig: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
     args = parser.parse_args(argv)
     if args.command is None:
         parser.print_help()
@@ -37,3 +46,17 @@ def main(argv: list[str] | None = None) -> int:
     except RigError as error:
         print(f"rig {args.command}: error: {error}", file=sys.stderr)
         return 2
+    except OSError as error:  # a file or folder that cannot be read or written: named by the OS error
+        print(f"rig {args.command}: error: {os_error_text(error)}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print(f"rig {args.command}: interrupted" + (" (run it again to resume)" if args.command == "run" else ""),
+              file=sys.stderr)
+        return EXIT_INTERRUPTED
+
+
+def os_error_text(error: OSError) -> str:
+    """One line for an OSError: what failed, on which file(s)."""
+    reason = error.strerror or str(error) or type(error).__name__
+    names = [str(name) for name in (error.filename, error.filename2) if name is not None]
+    return f"{reason}: {' -> '.join(names)}" if names else reason

@@ -15,6 +15,7 @@ from rig.compare.gate import Thresholds, failures, parse_max_abs
 from rig.compare.metrics import Interpolation
 from rig.compare.overlay import save_overlay
 from rig.compare.report import metrics_table, write_metrics
+from rig.runner.outputs import output_folder, staged_outputs
 
 
 def add_parser(subparsers: argparse._SubParsersAction) -> argparse.ArgumentParser:
@@ -81,9 +82,12 @@ def main(args: argparse.Namespace) -> int:
         "passed": not failed,
         "failures": failed,
     }
-    paths = list(write_metrics(directory, sidecar, items, meta))
-    if not args.no_plot:
-        paths.append(save_overlay(directory, sidecar, items))
+    directory = output_folder(directory)
+    with staged_outputs(directory) as staging:  # written whole, then renamed into place (rig.runner.outputs)
+        names = [path.name for path in write_metrics(staging, sidecar, items, meta)]
+        if not args.no_plot:
+            names.append(save_overlay(staging, sidecar, items).name)
+    paths = [directory / name for name in names]
     table = metrics_table(sidecar, items)
     shown = ["dataset", "model", "n_compared", "n_skipped", "rmse", "max_abs_dev", "max_rel_dev", "x_shift"]
     print(f"{sidecar.figure}")

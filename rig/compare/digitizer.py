@@ -10,7 +10,8 @@ Layouts (docs/compare.md):
 The separator is taken from the first line holding one: ``;`` (then decimal commas are read,
 ``0,5`` = 0.5), else a tab (decimal commas too), else ``,``. Blank lines and lines of
 separators only (padding) are skipped.
-A line that cannot be read raises :class:`DigitisedFormatError` naming the file and the line.
+A line that cannot be read (or a number beyond a float's range, or an x repeated with another y)
+raises :class:`DigitisedFormatError` naming the file and the line.
 """
 
 from __future__ import annotations
@@ -108,7 +109,10 @@ def _number(cell: str, line: _Line, what: str, source: str) -> float:
     text = cell.replace(",", ".") if line.decimal_comma else cell
     if not _NUMBER.fullmatch(text):
         raise DigitisedFormatError(source, line.number, f"{what} is {cell!r}, not a number")
-    return float(text)
+    value = float(text)
+    if not np.isfinite(value):
+        raise DigitisedFormatError(source, line.number, f"{what} is {cell!r}, beyond the range of a float")
+    return value
 
 
 def _single_dataset(lines: list[_Line], source: str) -> DigitisedCurve:
@@ -121,7 +125,7 @@ def _single_dataset(lines: list[_Line], source: str) -> DigitisedCurve:
         x = _number(line.cells[0], line, "x", source)
         y = _number(line.cells[1], line, "y", source)
         points.append((x, y, line.number))
-    return _curve(None, points)
+    return _curve(None, points, source)
 
 
 def _all_datasets(lines: list[_Line], source: str) -> list[DigitisedCurve]:
@@ -156,7 +160,7 @@ def _all_datasets(lines: list[_Line], source: str) -> list[DigitisedCurve]:
     for name, pts in zip(names, points):
         if not pts:
             raise DigitisedFormatError(source, lines[0].number, f"dataset {name!r} has no points")
-    return [_curve(name, pts) for name, pts in zip(names, points)]
+    return [_curve(name, pts, source) for name, pts in zip(names, points)]
 
 
 def _names(line: _Line, source: str) -> list[str]:
@@ -175,7 +179,16 @@ def _names(line: _Line, source: str) -> list[str]:
     return names
 
 
-def _curve(name: str | None, points: list[tuple[float, float, int]]) -> DigitisedCurve:
+def _curve(name: str | None, points: list[tuple[float, float, int]], source: str) -> DigitisedCurve:
+    """The dataset's points; an x given twice with two different y is an error (the curve must be a
+    function of x to be interpolated), naming both lines."""
+    first: dict[float, tuple[float, int]] = {}
+    for x, y, number in points:
+        y_seen, line_seen = first.setdefault(x, (y, number))
+        if y != y_seen:
+            where = "" if name is None else f"dataset {name!r}: "
+            raise DigitisedFormatError(source, number, f"{where}x = {x:g} repeats line {line_seen} with another y "
+                                       f"({y:g}, there {y_seen:g}); a digitised curve must be a function of x")
     data = np.array(points, dtype=float).reshape(-1, 3)
     return DigitisedCurve(name=name, x=data[:, 0], y=data[:, 1], lines=data[:, 2].astype(int))
 

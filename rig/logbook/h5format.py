@@ -31,11 +31,14 @@ def shown(value: object) -> str:
 
 
 def decoded(obj: h5py.HLObject, build: Callable[[], T]) -> T:
-    """Run ``build``; a ParameterError (bad value read from the file) becomes a LogFormatError."""
+    """Run ``build``; a ParameterError (bad value read from the file) or text that is not UTF-8
+    (damaged bytes) becomes a LogFormatError."""
     try:
         return build()
     except ParameterError as err:
         raise fail(obj, f"bad value read from the file: {err}") from None
+    except UnicodeDecodeError as err:
+        raise fail(obj, f"damaged text, not UTF-8 ({err.reason} at byte {err.start})") from None
 
 
 # ----------------------------------------------------------------------------- attributes

@@ -115,6 +115,12 @@ class LogWriter:
         self._clear_staging()
         return self.path
 
+    def discard(self) -> None:
+        """Remove the staging folder (the points written so far) without touching ``path``: for a
+        run that ended in an error a rerun would meet again."""
+        self._finalized = True
+        self._clear_staging()
+
     # ------------------------------------------------------------------------- internals
 
     def _check_open(self) -> None:

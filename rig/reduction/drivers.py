@@ -31,6 +31,9 @@ def significant_drivers(inputs: InputSet, numerators: Mapping[str, Numerator],
         value, u = float(propagation.values[i]), float(propagation.uncertainties[i])
         if math.isfinite(value) and math.isfinite(u) and abs(value) > significance * u:
             chosen.append(name)
+        elif not (math.isfinite(value) and math.isfinite(u)):  # a NaN never passes for "within" (issue 14)
+            notes.append(f"{numerators[name][0]} = {value:.3g} with u = {u:.3g} is not a finite reading, so {name} "
+                         "cannot drive alpha'")
         else:
             notes.append(f"{numerators[name][0]} = {value:.3g} is within {significance:g} u = {significance * u:.3g} "
                          f"of 0, so {name} cannot drive alpha'")

@@ -123,11 +123,14 @@ def mu_t(
 
 
 def pivoting_moment_stand_b(momentometer_torque: float, peripheral_force: float, radius_c: float) -> float:
-    """Stand B: moment about the rolling point M_C = T_Mo + R_c F_T [N m] (seed notes 3.2).
+    """Stand B: moment about the rolling point M_C = T_Mo + R_c F_T [N m] (docs/stand-b.md).
 
-    The momentometer in the disc shaft reads T_Mo = M_C - R_c F_x; F_T = F_x [N] from the
-    bearing dynamometer, R_c [m] the rolling-point radius on the disc. A small difference of
-    large numbers (hard case 6): its uncertainty is propagated by the chain.
+    T_Mo [N m]: the torque the momentometer shaft delivers to the disc; F_T [N]: the peripheral
+    force from the bearing dynamometer, R_c [m]: the rolling-point radius on the disc. The disc's
+    balance about its axis gives T_Mo + R_c F_T = T0 = mu a F_N nu_0 (the pivoting moment, up to
+    the disc bearing's friction); the seed notes' "T_Mo = M_C - R_c F_x" (3.2) fits no sign choice
+    of the disc as body 1 (docs/stand-b.md, "Note on the seed notes"). A small difference of large
+    numbers (hard case 6): its uncertainty is propagated by the chain.
     """
     return momentometer_torque + radius_c * peripheral_force
 

@@ -9,10 +9,21 @@ dataclasses.replace (e.g. Delta h = 0 for the second yoke setting, or a = 1.7 mm
 
 from __future__ import annotations
 
+import dataclasses
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
+from typing import TypeVar
 
 from rig import validate
+
+G = TypeVar("G")
+
+
+def with_inputs(geometry: G, values: Mapping[str, float]) -> G:
+    """``geometry`` with the fields the reduction's inputs ``geom_<field>`` change (a perturbed evaluation)."""
+    changed = {k[5:]: v for k, v in values.items() if k.startswith("geom_")}
+    return dataclasses.replace(geometry, **changed) if changed else geometry
 
 
 def _const(value: float, unit: str, tag: str, source: str):

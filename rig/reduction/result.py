@@ -22,8 +22,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rig.errors import ParameterError
 from rig.reduction.budget import UncertaintyBudget, budget
 from rig.reduction.coverage import expanded_uncertainty
+from rig.reduction.drivers import Numerator, significant_drivers
 from rig.reduction.iteration import ReductionSettings, solve_with_drivers
 from rig.reduction.uncertainty import InputSet, Propagation, first_order
 
@@ -123,6 +125,41 @@ class Guard:
     denominator: str
 
 
+def _insignificant(guard: Guard, values: Mapping[str, float], u: Mapping[str, float], significance: float) -> str:
+    """Why the guard's ratio is not reported ("" when it is): its denominator lies within
+    ``significance`` u of zero, or its u is not finite - then the check cannot be decided, and a
+    NaN never passes for "within" (issue 14 item 6)."""
+    den, u_den = values[guard.denominator], u[guard.denominator]
+    if not math.isfinite(values[guard.ratio]):
+        return ""
+    if not math.isfinite(u_den):
+        return (f"the uncertainty of {guard.denominator} = {den:.3g} is not finite (a perturbed evaluation of the "
+                "chain failed), so whether the ratio's denominator is non-zero cannot be checked")
+    if abs(den) > significance * u_den:
+        return ""
+    return (f"|{guard.denominator}| = {abs(den):.3g} is within {significance:g} u = {significance * u_den:.3g} "
+            "of 0: the ratio's denominator is not known to be non-zero (hard case 8)")
+
+
+def reduce_stand_point(evaluate: Callable[..., Evaluation], inputs: InputSet, numerators: Mapping[str, Numerator],
+                       guards: tuple[Guard, ...], driven: tuple[str, ...], settings: ReductionSettings,
+                       **chain: object) -> ReducedPoint:
+    """The step both stands' ``reduce`` share: choose the readings that may drive alpha'
+    (rig.reduction.drivers), bind the stand's chain ``evaluate(values, start, settings=..., **chain)``
+    and reduce the point (:func:`reduce_point`). ``chain`` must hold a callable ``coefficients``
+    (l/a, c/a, alpha') -> (nu_T, nu_v, nu_0)."""
+    if not callable(chain.get("coefficients")):
+        raise ParameterError("coefficients", chain.get("coefficients"),
+                             "a callable (l_over_a, c_over_a, alpha) -> (nu_T, nu_v, nu_0)")
+    drivers, no_driver = significant_drivers(inputs, numerators, settings.significance)
+
+    def bound(values: Mapping[str, float], start: Start) -> Evaluation:
+        return evaluate(values, start, settings=settings, **chain)
+
+    start = Start(settings.mu_start, drivers, True, no_driver)
+    return reduce_point(bound, inputs, start, settings.relative_step, guards, settings.significance, driven)
+
+
 def reduce_point(evaluate: Evaluate, inputs: InputSet, start: Start, relative_step: float,
                  guards: tuple[Guard, ...], significance: float, driven: tuple[str, ...]) -> ReducedPoint:
     """Evaluate a chain at its inputs, propagate to first order, guard, budget, U95.
@@ -139,10 +176,8 @@ def reduce_point(evaluate: Evaluate, inputs: InputSet, start: Start, relative_st
     u_all = propagation.uncertainties
     u = {name: float(u_all[i]) if math.isfinite(values[name]) else math.nan for i, name in enumerate(names)}
     for guard in guards:
-        den, u_den = values[guard.denominator], u[guard.denominator]
-        if math.isfinite(values[guard.ratio]) and not abs(den) > significance * u_den:
-            why = (f"|{guard.denominator}| = {abs(den):.3g} is within {significance:g} u = {significance * u_den:.3g} "
-                   "of 0: the ratio's denominator is not known to be non-zero (hard case 8)")
+        why = _insignificant(guard, values, u, significance)
+        if why:
             lost = driven if guard.ratio == nominal.driver else (guard.ratio,)
             for name in lost:
                 values[name], u[name] = math.nan, math.nan

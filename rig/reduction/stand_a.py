@@ -27,14 +27,12 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from rig import validate
-from rig.errors import ParameterError
 from rig.reduction import equations as eq
 from rig.reduction.coefficients import Coefficients, call_model
-from rig.reduction.drivers import significant_drivers
-from rig.reduction.geometry import StandAGeometry
+from rig.reduction.geometry import StandAGeometry, with_inputs
 from rig.reduction.iteration import ReductionSettings
 from rig.reduction.readings import ForceCalibration, Measured, reading_inputs, reading_value
-from rig.reduction.result import Evaluation, Guard, ReducedPoint, Start, evaluate_fixed_point, reduce_point
+from rig.reduction.result import Evaluation, Guard, ReducedPoint, Start, evaluate_fixed_point, reduce_stand_point
 from rig.reduction.uncertainty import Covariance, Distribution, InputQuantity, InputSet
 from rig.wheel_kinematics import SpinTooSmallError
 from sensors import COUNT_QUANTISATION_STD
@@ -116,11 +114,6 @@ def input_set(
     return InputSet(tuple(quantities), covariances)
 
 
-def _geometry(geometry: StandAGeometry, values: Mapping[str, float]) -> StandAGeometry:
-    changed = {k[5:]: v for k, v in values.items() if k.startswith("geom_")}
-    return dataclasses.replace(geometry, **changed) if changed else geometry
-
-
 def _lateral_force(values: Mapping[str, float], g: StandAGeometry) -> float:
     """F_y [N] from the dynamometer signal and its calibration (eq. 33 lever)."""
     force_dyn = eq.force_from_signal(
@@ -152,13 +145,17 @@ def evaluate(
     settings: ReductionSettings,
 ) -> Evaluation:
     """The chain at one set of input values (names as in :func:`input_set`)."""
-    g = _geometry(geometry, values)
+    g = with_inputs(geometry, values)
     out = dict.fromkeys(OUTPUTS, math.nan)
     out["F_y_N"] = f_y = _lateral_force(values, g)
     kinematic = tuple(name for name in OUTPUTS if name != "F_y_N")
     n1, n2 = values["N1"], values["N2"]
     if min(n1, n2) < settings.min_counts:
-        why = f"counts N1 = {n1:g}, N2 = {n2:g} below min_counts = {settings.min_counts} (stall, hard case 2)"
+        counts = f"counts N1 = {n1:g}, N2 = {n2:g} below min_counts = {settings.min_counts}"
+        if n1 < settings.min_counts:  # wheel 1 is driven at its set speed: too few marks passed in the gate
+            why = f"{counts}: the gate of {readings.gate_time.value:g} s is too short for wheel 1's marks"
+        else:
+            why = f"{counts}: wheel 2 stalled (hard case 2)"
         return Evaluation(out, dict.fromkeys(kinematic, why), math.nan, 0)
     i_k = eq.ratio_from_counts(n1, n2, readings.marks_1, readings.marks_2)
     omega_1 = eq.angular_speed_from_counts(n1, readings.marks_1, reading_value(values, "T_gate", "s"))
@@ -215,23 +212,12 @@ def reduce(
     rig.reduction.coefficients.OutsideModelDomain. geometry defaults to the seed-notes stand A
     (rig.reduction.geometry); settings to ReductionSettings().
     """
-    if not callable(coefficients):
-        raise ParameterError(
-            "coefficients", coefficients, "a callable (l_over_a, c_over_a, alpha) -> (nu_T, nu_v, nu_0)"
-        )
     geometry = StandAGeometry() if geometry is None else geometry
     settings = ReductionSettings() if settings is None else settings
     inputs = input_set(readings, geometry, geometry_u)
     numerators = {
-        "mu_v": ("F_y", lambda v: _lateral_force(v, _geometry(geometry, v))),
-        "mu_T": ("T2 + F_y (Delta h - c)", lambda v: _moment_numerator(v, readings, _geometry(geometry, v))),
+        "mu_v": ("F_y", lambda v: _lateral_force(v, with_inputs(geometry, v))),
+        "mu_T": ("T2 + F_y (Delta h - c)", lambda v: _moment_numerator(v, readings, with_inputs(geometry, v))),
     }
-    drivers, no_driver = significant_drivers(inputs, numerators, settings.significance)
-
-    def chain(values: Mapping[str, float], start: Start) -> Evaluation:
-        return evaluate(
-            values, start, readings=readings, geometry=geometry, coefficients=coefficients, settings=settings
-        )
-
-    start = Start(settings.mu_start, drivers, True, no_driver)
-    return reduce_point(chain, inputs, start, settings.relative_step, GUARDS, settings.significance, DRIVEN)
+    return reduce_stand_point(evaluate, inputs, numerators, GUARDS, DRIVEN, settings, readings=readings,
+                              geometry=geometry, coefficients=coefficients)

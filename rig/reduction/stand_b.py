@@ -24,14 +24,12 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from rig import validate
-from rig.errors import ParameterError
 from rig.reduction import equations as eq
 from rig.reduction.coefficients import Coefficients, call_model
-from rig.reduction.drivers import significant_drivers
-from rig.reduction.geometry import StandBGeometry
+from rig.reduction.geometry import StandBGeometry, with_inputs
 from rig.reduction.iteration import ReductionSettings
 from rig.reduction.readings import Measured, reading_inputs, reading_value
-from rig.reduction.result import Evaluation, Guard, ReducedPoint, Start, evaluate_fixed_point, reduce_point
+from rig.reduction.result import Evaluation, Guard, ReducedPoint, Start, evaluate_fixed_point, reduce_stand_point
 from rig.reduction.uncertainty import InputQuantity, InputSet
 
 OUTPUTS = (
@@ -89,11 +87,6 @@ def input_set(
     return InputSet(tuple(quantities))
 
 
-def _geometry(geometry: StandBGeometry, values: Mapping[str, float]) -> StandBGeometry:
-    changed = {k[5:]: v for k, v in values.items() if k.startswith("geom_")}
-    return dataclasses.replace(geometry, **changed) if changed else geometry
-
-
 def _pivoting_moment(values: Mapping[str, float], g: StandBGeometry) -> float:
     """M_C = T_Mo + R_c F_T [N m] (seed notes 3.2)."""
     return eq.pivoting_moment_stand_b(reading_value(values, "T_Mo", "N_m"), reading_value(values, "F_T", "N"),
@@ -110,7 +103,7 @@ def evaluate(
     settings: ReductionSettings,
 ) -> Evaluation:
     """The chain at one set of input values (names as in :func:`input_set`)."""
-    g = _geometry(geometry, values)
+    g = with_inputs(geometry, values)
     out = dict.fromkeys(OUTPUTS, math.nan)
     l = reading_value(values, "l_setting", "m")
     c = eq.stand_b_offset(g.pivot_distance, reading_value(values, "sigma", "rad"))
@@ -154,24 +147,13 @@ def reduce(
     geometry_u: Mapping[str, float] | None = None,
 ) -> ReducedPoint:
     """Reduce one stand-B operating point (see rig.reduction.stand_a.reduce for the arguments)."""
-    if not callable(coefficients):
-        raise ParameterError(
-            "coefficients", coefficients, "a callable (l_over_a, c_over_a, alpha) -> (nu_T, nu_v, nu_0)"
-        )
     geometry = StandBGeometry() if geometry is None else geometry
     settings = ReductionSettings() if settings is None else settings
     inputs = input_set(readings, geometry, geometry_u)
     numerators = {
         "mu_v": ("F_V", lambda v: reading_value(v, "F_V", "N")),
         "mu_T": ("F_T", lambda v: reading_value(v, "F_T", "N")),
-        "mu_M": ("M_C", lambda v: _pivoting_moment(v, _geometry(geometry, v))),
+        "mu_M": ("M_C", lambda v: _pivoting_moment(v, with_inputs(geometry, v))),
     }
-    drivers, no_driver = significant_drivers(inputs, numerators, settings.significance)
-
-    def chain(values: Mapping[str, float], start: Start) -> Evaluation:
-        return evaluate(
-            values, start, readings=readings, geometry=geometry, coefficients=coefficients, settings=settings
-        )
-
-    start = Start(settings.mu_start, drivers, True, no_driver)
-    return reduce_point(chain, inputs, start, settings.relative_step, GUARDS, settings.significance, DRIVEN)
+    return reduce_stand_point(evaluate, inputs, numerators, GUARDS, DRIVEN, settings, readings=readings,
+                              geometry=geometry, coefficients=coefficients)

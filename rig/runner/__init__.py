@@ -16,8 +16,9 @@ from rig.errors import ParameterError
 from rig.runner.characteristics_run import run_characteristics_scene
 from rig.runner.oscillation_run import run_oscillation_scene
 from rig.runner.operator import PointResult, Step, run_operator
+from rig.runner.outputs import SUMMARY_NAME
 from rig.runner.reduce_file import reduce_log_file
-from rig.runner.stand_run import LOG_NAME, MAX_JOBS, SUMMARY_NAME, RunReport, run_stand_scene
+from rig.runner.stand_run import LOG_NAME, MAX_JOBS, RunReport, run_stand_scene
 from rig.scenes import CharacteristicsScene, OscillationScene, Scene
 
 

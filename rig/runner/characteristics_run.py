@@ -11,28 +11,36 @@ from pathlib import Path
 from tqdm import tqdm
 
 from rig.characteristics import plot, sweep
-from rig.runner.stand_run import SUMMARY_NAME, RunReport
+from rig.runner.outputs import CHARACTERISTICS_CSV as CSV_NAME
+from rig.runner.outputs import CHARACTERISTICS_FIGURE as FIGURE_NAME
+from rig.runner.outputs import SUMMARY_NAME, output_folder, staged_outputs
+from rig.runner.stand_run import RunReport
 from rig.runner.sweep import show_progress
 from rig.scenes.characteristics_scene import CharacteristicsScene
-
-CSV_NAME = "characteristics.csv"
-FIGURE_NAME = "characteristics.png"
 
 
 def run_characteristics_scene(scene: CharacteristicsScene, out_dir: Path, *, progress: bool | None = None) -> RunReport:
     """Evaluate every model over the scene's cases and alpha' values; write the outputs into ``out_dir``."""
-    out_dir = Path(out_dir)
-    out_dir.mkdir(parents=True, exist_ok=True)
+    out_dir = output_folder(out_dir)
     total = len(scene.cases) * (len(scene.models) + len(scene.variants)) * len(scene.alphas)
     with tqdm(total=total, desc=f"scene {scene.name}", disable=not show_progress(progress)) as bar:
         table = sweep(scene.cases, scene.models, scene.alphas, poisson=scene.poisson, n=scene.n,
                       effects=dict(scene.effects), variants=scene.variants, progress=lambda k, _: bar.update(k - bar.n))
-    table.to_csv(out_dir / CSV_NAME, index=False)
-    files = [CSV_NAME]
+    with staged_outputs(out_dir, replace_previous=True) as staging:
+        text = _write_outputs(scene, table, total, staging)
+    return RunReport(out_dir, tuple(_files(scene)), total, len(table), 0, (), False, text)
+
+
+def _files(scene: CharacteristicsScene) -> list[str]:
+    return [CSV_NAME, *([FIGURE_NAME] if scene.outputs.figures else []), SUMMARY_NAME]
+
+
+def _write_outputs(scene: CharacteristicsScene, table, total: int, staging: Path) -> str:
+    """Write the CSV, the figure and summary.txt into ``staging``; returns the summary text."""
+    table.to_csv(staging / CSV_NAME, index=False)
     if scene.outputs.figures:
-        plot(table, out_dir / FIGURE_NAME, f"{scene.description} (poisson {scene.poisson:g})")
-        files.append(FIGURE_NAME)
-    files.append(SUMMARY_NAME)
+        plot(table, staging / FIGURE_NAME, f"{scene.description} (poisson {scene.poisson:g})")
+    files = _files(scene)
     text = "\n".join([
         "friction-rig run summary",
         f"scene:       {scene.name} ({scene.source})",
@@ -46,5 +54,5 @@ def run_characteristics_scene(scene: CharacteristicsScene, out_dir: Path, *, pro
         f"evaluated:   {len(table)} contact solves",
         f"outputs:     {', '.join(files)}",
     ]) + "\n"
-    (out_dir / SUMMARY_NAME).write_text(text, encoding="utf-8")
-    return RunReport(out_dir, tuple(files), total, len(table), 0, (), False, text)
+    (staging / SUMMARY_NAME).write_text(text, encoding="utf-8")
+    return text

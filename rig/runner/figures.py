@@ -17,7 +17,6 @@ import pandas as pd
 
 from rig.scenes.procedure import PlannedPoint, Procedure
 
-FIGURE_NAME = "reduced_vs_truth.png"
 QUANTITIES = {"l_over_a": "$l/a$", "c_over_a": "$c/a$", "mu_v": r"$\mu_v$", "mu_T": r"$\mu_T$"}
 
 

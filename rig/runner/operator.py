@@ -82,19 +82,32 @@ def _one_point(env: simpy.Environment, stand: Stand, point: PlannedPoint, proced
 
 
 def operate(env: simpy.Environment, stand: Stand, points: Iterable[PlannedPoint], procedure: Procedure, seed: int,
-            deliver: Callable[[PointResult], None]) -> Generator[simpy.Event, None, None]:
-    """The operator process: ``deliver`` receives each finished point in order."""
-    for point in points:
-        result = yield from _one_point(env, stand, point, procedure, seed)
-        deliver(result)
-        if result.failure is not None and procedure.on_settle_timeout is TimeoutPolicy.STOP:
-            return
+            deliver: Callable[[PointResult], None], raised: list[Exception]) -> Generator[simpy.Event, None, None]:
+    """The operator process: ``deliver`` receives each finished point in order.
+
+    An error of a point (or of ``deliver``) is appended to ``raised`` and ends the process,
+    instead of propagating through simpy (which rebuilds an exception as
+    ``type(error)(*error.args)`` - a TypeError for errors whose constructor takes other arguments).
+    """
+    try:
+        for point in points:
+            result = yield from _one_point(env, stand, point, procedure, seed)
+            deliver(result)
+            if result.failure is not None and procedure.on_settle_timeout is TimeoutPolicy.STOP:
+                return
+    except Exception as error:  # noqa: BLE001 - handed to run_operator, raised there unchanged
+        raised.append(error)
 
 
 def run_operator(stand: Stand, points: Iterable[PlannedPoint], procedure: Procedure, seed: int,
                  deliver: Callable[[PointResult], None]) -> float:
-    """Run the operator over ``points`` on a fresh simpy clock; returns the operator time spent [s]."""
+    """Run the operator over ``points`` on a fresh simpy clock; returns the operator time spent [s].
+
+    An error inside a point propagates as it was raised (type, message and attributes)."""
     env = simpy.Environment()
-    env.process(operate(env, stand, points, procedure, seed, deliver))
+    raised: list[Exception] = []
+    env.process(operate(env, stand, points, procedure, seed, deliver, raised))
     env.run()
+    if raised:
+        raise raised[0]
     return float(env.now)

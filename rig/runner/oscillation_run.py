@@ -14,18 +14,19 @@ import pandas as pd
 from tqdm import tqdm
 
 from rig.oscillation import amplitude_sweep, cycle_work, plateau_onset, plot_sweep, plot_work_map
-from rig.runner.stand_run import SUMMARY_NAME, RunReport
+from rig.runner.outputs import OSCILLATION_CSV as CSV_NAME
+from rig.runner.outputs import OSCILLATION_FIGURE as SWEEP_FIGURE
+from rig.runner.outputs import SUMMARY_NAME, output_folder, staged_outputs
+from rig.runner.outputs import WORK_MAP_FIGURE as MAP_FIGURE
+from rig.runner.stand_run import RunReport
 from rig.runner.sweep import show_progress
 from rig.scenes.oscillation_scene import OscillationScene
 
-CSV_NAME = "oscillation_sweep.csv"
-SWEEP_FIGURE = "oscillation_sweep.png"
-MAP_FIGURE = "work_map.png"
+FILES = (CSV_NAME, SWEEP_FIGURE, MAP_FIGURE, SUMMARY_NAME)
 
 
 def run_oscillation_scene(scene: OscillationScene, out_dir: Path, *, progress: bool | None = None) -> RunReport:
-    out_dir = Path(out_dir)
-    out_dir.mkdir(parents=True, exist_ok=True)
+    out_dir = output_folder(out_dir)
     total = len(scene.contacts) * len(scene.stroke_ratios)
     tables = []
     with tqdm(total=total, desc=f"scene {scene.name}", disable=not show_progress(progress)) as bar:
@@ -34,12 +35,19 @@ def run_oscillation_scene(scene: OscillationScene, out_dir: Path, *, progress: b
             table.insert(0, "mu", contact.mu)
             table.insert(1, "alpha", contact.alpha)
             tables.append(table)
-    sweep = pd.concat(tables, ignore_index=True)
-    sweep.to_csv(out_dir / CSV_NAME, index=False)
     first = scene.contacts[0]
-    plot_sweep(tables[0], out_dir / SWEEP_FIGURE, f"{scene.description}\n{first.label}, n = {scene.n}")
     work = cycle_work(first, scene.map_stroke_ratio, scene.n)
-    plot_work_map(work, out_dir / MAP_FIGURE, f"{first.label}, e = {scene.map_stroke_ratio:g}")
+    with staged_outputs(out_dir, replace_previous=True) as staging:
+        pd.concat(tables, ignore_index=True).to_csv(staging / CSV_NAME, index=False)
+        plot_sweep(tables[0], staging / SWEEP_FIGURE, f"{scene.description}\n{first.label}, n = {scene.n}")
+        plot_work_map(work, staging / MAP_FIGURE, f"{first.label}, e = {scene.map_stroke_ratio:g}")
+        text = _summary(scene, tables)
+        (staging / SUMMARY_NAME).write_text(text, encoding="utf-8")
+    return RunReport(out_dir, FILES, total, total, 0, (), False, text)
+
+
+def _summary(scene: OscillationScene, tables: list[pd.DataFrame]) -> str:
+    first = scene.contacts[0]
     lines = [
         "friction-rig run summary",
         f"scene:       {scene.name} ({scene.source})",
@@ -57,8 +65,5 @@ def run_oscillation_scene(scene: OscillationScene, out_dir: Path, *, progress: b
         ratio_u = (b["max_slip_path_m"] / a["max_slip_path_m"]).median()
         lines.append(f"mu {scene.contacts[1].mu:g} vs {first.mu:g}: max W x {ratio_w:.2f}, max slip path x "
                      f"{ratio_u:.2f} (medians over e)")
-    files = [CSV_NAME, SWEEP_FIGURE, MAP_FIGURE, SUMMARY_NAME]
-    lines.append(f"outputs:     {', '.join(files)}")
-    text = "\n".join(lines) + "\n"
-    (out_dir / SUMMARY_NAME).write_text(text, encoding="utf-8")
-    return RunReport(out_dir, tuple(files), total, total, 0, (), False, text)
+    lines.append(f"outputs:     {', '.join(FILES)}")
+    return "\n".join(lines) + "\n"

@@ -9,14 +9,17 @@ state; the stand class must be importable by its module path).
 
 The logbook's records are read-only mappings (``types.MappingProxyType``), which pickle cannot
 handle; a reducer registered on multiprocessing's pickler (only there) sends them as dicts.
-An error inside a worker comes back as text (:class:`PointFailure`, with its traceback) and is
-raised in the parent as :class:`WorkerError` naming the point. ``simulate_point`` and
-``accept`` are shared with the Dask path (rig.runner.dask_pool).
+An error inside a worker comes back as :class:`PointFailure`: a named error (rig.errors.RigError)
+is raised in the parent as it was raised in the worker, as a serial run raises it; any other
+comes back as text with its traceback and is raised as :class:`WorkerError` naming the point.
+Workers ignore Ctrl-C (the parent reports it). ``simulate_point`` and ``accept`` are shared with
+the Dask path (rig.runner.dask_pool).
 """
 
 from __future__ import annotations
 
 import multiprocessing
+import signal
 import traceback
 import types
 from collections.abc import Callable, Sequence
@@ -50,12 +53,17 @@ class PointFailure:
     kind: str
     message: str
     trace: str
+    named: RigError | None = None
 
     @classmethod
     def of(cls, point: PlannedPoint, error: BaseException) -> PointFailure:
-        return cls(point, type(error).__name__, str(error), "".join(traceback.format_exception(error)))
+        named = error if isinstance(error, RigError) and not isinstance(error, WorkerError) else None
+        return cls(point, type(error).__name__, str(error), "".join(traceback.format_exception(error)), named)
 
-    def error(self) -> WorkerError:
+    def error(self) -> RigError:
+        """The named error itself (raised as in a serial run), else a WorkerError with the traceback."""
+        if self.named is not None:
+            return self.named
         return WorkerError(f"point {self.point.index} {dict(self.point.settings)}: {self.kind}: "
                            f"{self.message}\n{self.trace}")
 
@@ -82,6 +90,7 @@ _worker: dict = {}
 
 
 def _start_worker(scene: StandScene) -> None:
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle (one line, exit 130)
     stand = scene.build_stand()
     stand.calibrate(scene.seed)
     _worker.update(scene=scene, stand=stand)

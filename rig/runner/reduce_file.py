@@ -7,11 +7,13 @@ scene asks for figures) go into the output folder, ``/reduced`` into the log.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
-from rig.errors import ParameterError
-from rig.logbook import read_metadata
-from rig.runner.figures import FIGURE_NAME, reduced_vs_truth_figure
+from rig.errors import LogFormatError, ParameterError
+from rig.logbook import point_indices, read_metadata
+from rig.runner.figures import reduced_vs_truth_figure
+from rig.runner.outputs import REDUCED_FIGURE, output_folder, staged_outputs
 from rig.runner.reduction import Reduction, reduce_to_files
 from rig.scenes.load import parse_scene
 from rig.scenes.stand_scene import StandScene
@@ -22,16 +24,19 @@ def reduce_log_file(log_path: Path, out_dir: Path | None = None, **parse_options
     the files written. ``parse_options`` go to rig.scenes.parse_scene (e.g. ``stand_class_of``)."""
     log_path = Path(log_path)
     metadata = read_metadata(log_path)
+    if not point_indices(log_path):
+        raise LogFormatError(f"{log_path}: the log holds no operating point (every point of its run failed?); "
+                             "nothing to reduce")
     scene = parse_scene(metadata.scene_toml, name=log_path.stem, source=f"{log_path} (the scene stored in the log)",
                         **parse_options)
     if not isinstance(scene, StandScene):
         raise ParameterError("log", str(log_path), "the log of a stand run (its scene has no stand)")
-    out_dir = log_path.parent if out_dir is None else Path(out_dir)
-    out_dir.mkdir(parents=True, exist_ok=True)
-    reduction = reduce_to_files(scene.build_stand(), log_path, scene.contact, out_dir)
-    files = [reduction.csv]
-    if scene.outputs.figures:
-        figure = reduced_vs_truth_figure(reduction.table, scene.procedure.points(), scene.procedure,
-                                         out_dir / FIGURE_NAME, f"{scene.name}: {scene.description}")
-        files += [] if figure is None else [figure]
-    return reduction, files
+    out_dir = output_folder(log_path.parent if out_dir is None else out_dir)
+    with staged_outputs(out_dir) as staging:
+        reduction = reduce_to_files(scene.build_stand(), log_path, scene.contact, staging)
+        names = [reduction.csv.name]
+        if scene.outputs.figures:
+            figure = reduced_vs_truth_figure(reduction.table, scene.procedure.points(), scene.procedure,
+                                             staging / REDUCED_FIGURE, f"{scene.name}: {scene.description}")
+            names += [] if figure is None else [figure.name]
+    return replace(reduction, csv=out_dir / reduction.csv.name), [out_dir / name for name in names]

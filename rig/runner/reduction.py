@@ -20,9 +20,9 @@ from rig.errors import LogFormatError, ParameterError, RigError
 from rig.logbook import write_reduced
 from rig.logbook.truth import read_truth
 from rig.logbook.units import DIMENSIONLESS
+from rig.runner.outputs import REDUCED_CSV
 from rig.stands.base import ContactSpec, Stand
 
-REDUCED_CSV = "reduced.csv"
 TRUTH_SOURCES = {
     "l_over_a": ("l_over_a",),
     "c_over_a": ("c_over_a",),
@@ -77,6 +77,6 @@ def reduce_to_files(stand: Stand, log_path: Path, contact: ContactSpec, out_dir:
     table.to_csv(csv, index=True, index_label=table.index.name or "point")
     try:
         write_reduced(log_path, table)
-    except ParameterError as error:  # reported in the summary; reduced.csv holds the table
+    except (ParameterError, OSError) as error:  # e.g. a read-only log: reported; reduced.csv holds the table
         return Reduction(table, csv, False, f"reduced table not stored in {log_path.name}: {error}")
     return Reduction(table, csv, True, None)

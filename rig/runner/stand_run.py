@@ -1,12 +1,17 @@
 """A stand scene from start to outputs: log.h5, reduced.csv, the figure and summary.txt in one folder.
 
-Order: open the log (resuming an interrupted run of the same scene) -> build the stand with the
-scene's effects only -> calibrate once -> sweep the points not yet logged, writing each as it
-finishes -> finalize log.h5 -> reduce (reduced.csv and ``/reduced`` in the log) -> figure ->
-summary.txt. The points run in this process, on a local process pool (``jobs`` > 1) or on a
+Order: build the stand with the scene's effects only (an error there leaves nothing) -> open the
+log (resuming an interrupted run of the same scene) -> calibrate once -> sweep the points not
+yet logged, writing each as it finishes -> remove the previous run's outputs -> finalize log.h5
+-> reduce (reduced.csv and ``/reduced`` in the log) -> figures -> summary.txt, the outputs
+staged and moved into the folder whole (rig.runner.outputs). The points run in this process,
+on a local process pool (``jobs`` > 1) or on a
 Dask cluster (``scheduler``: a scheduler's address; rig.runner.dask_pool). A point that does
-not settle is reported (policy: rig.runner.operator); any other error propagates with the
-staging folder intact, so running the scene again resumes.
+not settle is reported (policy: rig.runner.operator). A named error of the scene (a
+ParameterError, ConvergenceError, ... raised while calibrating or inside a point) removes the
+staging folder - running the same scene again would meet it again - and propagates; any other
+error (an interruption, a full disk, a worker lost: rig.runner.pool.WorkerError) propagates with
+the staging folder intact, so running the scene again resumes.
 """
 
 from __future__ import annotations
@@ -16,16 +21,19 @@ from pathlib import Path
 
 from rig import validate
 from rig.campaigns import paper_figure
+from rig.errors import RigError
 from rig.logbook import LogWriter, RunMetadata, point_indices, read_point, utc_timestamp
 from rig.runner.dask_pool import check_scheduler
-from rig.runner.figures import FIGURE_NAME, reduced_vs_truth_figure
+from rig.runner.figures import reduced_vs_truth_figure
+from rig.runner.outputs import REDUCED_FIGURE, SUMMARY_NAME, output_folder, remove_stale, staged_outputs
+from rig.runner.pool import WorkerError
 from rig.runner.reduction import Reduction, read_truth_if_any, reduce_to_files
 from rig.runner.summary import RunFacts, summary_text
 from rig.runner.sweep import SETTLE_TRUTH, Failure, run_sweep
 from rig.scenes.stand_scene import StandScene
+from rig.stands.base import Stand
 
 LOG_NAME = "log.h5"
-SUMMARY_NAME = "summary.txt"
 MAX_JOBS = 256
 
 
@@ -62,45 +70,61 @@ def run_stand_scene(scene: StandScene, out_dir: Path, *, jobs: int = 1, schedule
     jobs = validate.integer("jobs", jobs, 1, MAX_JOBS)
     if scheduler is not None:
         scheduler = check_scheduler(scheduler, jobs)
-    out_dir = Path(out_dir)
-    out_dir.mkdir(parents=True, exist_ok=True)
+    out_dir = output_folder(out_dir)
     log_path = out_dir / LOG_NAME
+    stand = scene.build_stand()  # before the log is opened: a stand that cannot be built leaves nothing
     writer = LogWriter(log_path, RunMetadata(scene.text, scene.seed, scene.stand, utc_timestamp()))
     plan = scene.procedure.points()
     todo = [point for point in plan if point.index not in writer.done]
     serial = scheduler is None and (jobs == 1 or len(todo) <= 1)
-    stand = scene.build_stand()
-    if serial and todo:
-        stand.calibrate(scene.seed)
-    sweep = run_sweep(scene, stand if serial else None, todo, writer, jobs=1 if serial else jobs, progress=progress,
-                      scheduler=scheduler)
+    try:
+        if serial and todo:
+            stand.calibrate(scene.seed)
+        sweep = run_sweep(scene, stand if serial else None, todo, writer, jobs=1 if serial else jobs,
+                          progress=progress, scheduler=scheduler)
+    except RigError as error:
+        if not isinstance(error, WorkerError):  # a named error of the scene: a rerun would meet it again
+            writer.discard()
+        raise
+    remove_stale(out_dir)  # the previous outputs describe the log about to be replaced
     writer.finalize()
-
-    files, problems = [LOG_NAME], []
-    reduction: Reduction | None = None
-    if scene.outputs.reduce:
-        reduction = reduce_to_files(stand, log_path, scene.contact, out_dir)
-        files.append(reduction.csv.name)
-        if reduction.problem:
-            problems.append(reduction.problem)
-    campaign_lines: tuple[str, ...] = ()
-    if scene.outputs.figures and reduction is not None:
-        figure = reduced_vs_truth_figure(reduction.table, plan, scene.procedure, out_dir / FIGURE_NAME,
-                                         f"{scene.name}: {scene.description}")
-        if figure is not None:
-            files.append(figure.name)
-        if scene.outputs.paper_figure is not None:
-            outcome = paper_figure(scene.outputs.paper_figure)(reduction.table, log_path, out_dir,
-                                                               f"{scene.name}: {scene.description}")
-            files.extend(outcome.files)
-            campaign_lines = outcome.summary
-    files.append(SUMMARY_NAME)
     facts = RunFacts(
         planned=len(plan), resumed=len(plan) - len(todo), written_now=len(sweep.written), failures=sweep.failures,
         stopped=sweep.stopped, jobs=jobs, scheduler=scheduler, settle_times_s=_settle_times(log_path),
         calibration=_calibration_names(log_path), operator_time_s=sweep.operator_time_s,
     )
-    text = summary_text(scene, facts, None if reduction is None else reduction.table, problems, files, campaign_lines)
-    (out_dir / SUMMARY_NAME).write_text(text, encoding="utf-8")
+    with staged_outputs(out_dir) as staging:
+        files, text = _write_outputs(scene, stand, log_path, facts, staging)
     return RunReport(out_dir, tuple(files), len(plan), facts.resumed + facts.written_now, facts.resumed,
                      tuple(sweep.failures), sweep.stopped, text)
+
+
+def _write_outputs(scene: StandScene, stand: Stand, log_path: Path, facts: RunFacts,
+                   staging: Path) -> tuple[list[str], str]:
+    """Reduce the finalized log, draw the figures and write summary.txt into ``staging``; returns the
+    names of the run's files and the summary text."""
+    files, problems = [LOG_NAME], []
+    reduction: Reduction | None = None
+    empty = not point_indices(log_path)
+    if scene.outputs.reduce and empty:
+        problems.append("not reduced: the log holds no operating point (every point failed)")
+    if scene.outputs.reduce and not empty:
+        reduction = reduce_to_files(stand, log_path, scene.contact, staging)
+        files.append(reduction.csv.name)
+        if reduction.problem:
+            problems.append(reduction.problem)
+    campaign_lines: tuple[str, ...] = ()
+    if scene.outputs.figures and reduction is not None:
+        title = f"{scene.name}: {scene.description}"
+        figure = reduced_vs_truth_figure(reduction.table, scene.procedure.points(), scene.procedure,
+                                         staging / REDUCED_FIGURE, title)
+        if figure is not None:
+            files.append(figure.name)
+        if scene.outputs.paper_figure is not None:
+            outcome = paper_figure(scene.outputs.paper_figure)(reduction.table, log_path, staging, title)
+            files.extend(outcome.files)
+            campaign_lines = outcome.summary
+    files.append(SUMMARY_NAME)
+    text = summary_text(scene, facts, None if reduction is None else reduction.table, problems, files, campaign_lines)
+    (staging / SUMMARY_NAME).write_text(text, encoding="utf-8")
+    return files, text

@@ -57,6 +57,9 @@ def parse_scene(text: str, *, name: str, source: str = "<text>", stand_class_of=
     if not isinstance(text, str):
         raise ParameterError("scene text", type(text).__name__, "the scene file's text (str)")
     document = read_document(text, source)
+    if not document:
+        raise ParameterError(f"scene file {source}", "empty" if not text.strip() else "no table",
+                             "a TOML scene document with at least a [scene] table")
     kind = scene_kind(document)
     if kind is SceneKind.CHARACTERISTICS:
         return parse_characteristics_scene(document, name=name, source=source, text=text)

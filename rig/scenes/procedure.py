@@ -135,14 +135,22 @@ class Procedure:
 
 def _fixed(table: Mapping[str, object], specs: Mapping[str, object], where: str) -> dict[str, float]:
     T.check_keys(table, specs, where)
-    return {name: T.number(T.dotted(where, name), value, specs[name].lo, specs[name].hi, specs[name].unit)
-            for name, value in table.items()}
+    return {name: _setting(T.dotted(where, name), value, specs[name]) for name, value in table.items()}
+
+
+def _setting(where: str, value: object, spec) -> float:
+    """One value of a setting: inside the spec's range and one of its choices, if it has any."""
+    return spec.check_choice(where, T.number(where, value, spec.lo, spec.hi, spec.unit))
 
 
 def _sweep(table: Mapping[str, object], specs: Mapping[str, object], where: str):
     T.check_keys(table, specs, where)
-    return tuple((name, T.values(T.dotted(where, name), given, specs[name].lo, specs[name].hi, specs[name].unit))
-                 for name, given in table.items())
+    sweep = []
+    for name, given in table.items():
+        values = T.values(T.dotted(where, name), given, specs[name].lo, specs[name].hi, specs[name].unit)
+        sweep.append((name, tuple(specs[name].check_choice(f"{T.dotted(where, name)}[{k}]", value)
+                                  for k, value in enumerate(values))))
+    return tuple(sweep)
 
 
 def _series(common: dict[str, float], fixed: dict[str, float], sweep, specs, where: str) -> Series:

@@ -17,7 +17,7 @@ from rig.logbook.content import MAX_SEED
 from rig.scenes import tables as T
 from rig.scenes.contact import parse_contact
 from rig.scenes.procedure import Procedure, parse_procedure
-from rig.stands.base import ContactSpec, DriveMode, Stand
+from rig.stands.base import MAX_GATE_SAMPLES, ContactSpec, DriveMode, Stand
 
 # The campaign figures a scene may name in [outputs] paper_figure (rig.campaigns draws them; the
 # scene format only knows their names, so scenes never import the campaigns).
@@ -132,6 +132,10 @@ def parse_stand_scene(document: Mapping[str, object], *, name: str, source: str,
                             0, MAX_SEED)
     drive = T.member(DriveMode, T.required(head, "drive", "scene", "one of " + ", ".join(m.value for m in DriveMode)),
                      "scene.drive")
+    parameters = parse_parameters(T.sub_table(document, "parameters", "", required=False) or {},
+                                  stand_class.PARAMETERS)
+    procedure = parse_procedure(T.sub_table(document, "procedure", "", required=True), stand_class.SETTINGS)
+    check_gate(procedure.gate_time_s, stand_class.gate_sample_rate_Hz(parameters))
     return StandScene(
         name=name,
         description=T.text(head, "description", "scene"),
@@ -141,10 +145,17 @@ def parse_stand_scene(document: Mapping[str, object], *, name: str, source: str,
         stand_class=stand_class,
         seed=seed,
         drive=drive,
-        parameters=parse_parameters(T.sub_table(document, "parameters", "", required=False) or {},
-                                    stand_class.PARAMETERS),
+        parameters=parameters,
         effects=parse_effects(T.sub_table(document, "effects", "", required=False) or {}, stand_class),
         contact=parse_contact(T.sub_table(document, "contact", "", required=True)),
-        procedure=parse_procedure(T.sub_table(document, "procedure", "", required=True), stand_class.SETTINGS),
+        procedure=procedure,
         outputs=parse_outputs(T.sub_table(document, "outputs", "", required=False)),
     )
+
+
+def check_gate(gate_time_s: float, rate_Hz: float) -> None:
+    """The gate must fit the recorder: at most MAX_GATE_SAMPLES samples per channel at ``rate_Hz``."""
+    if rate_Hz > 0.0 and gate_time_s * rate_Hz > MAX_GATE_SAMPLES:
+        raise ParameterError("procedure.gate_time_s", gate_time_s,
+                             f"(0, {MAX_GATE_SAMPLES / rate_Hz:g}] s: at most {MAX_GATE_SAMPLES} samples per "
+                             f"channel at {rate_Hz:g} Hz, what the simulated recorder holds")

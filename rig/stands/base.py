@@ -24,7 +24,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import ClassVar
 
-from rig.errors import ConvergenceError
+from rig.errors import ConvergenceError, ParameterError
 from rig.logbook import LogSchema, PointRecord, Quantity
 
 
@@ -81,13 +81,23 @@ class EffectSpec:
 class SettingSpec:
     """A quantity a procedure may set per operating point (e.g. the brake set-point).
 
-    unit: SI unit string; lo, hi: valid range (inclusive) in that unit; description: one line.
+    unit: SI unit string; lo, hi: valid range (inclusive) in that unit; description: one line;
+    choices: the only values allowed, for a setting that takes a few (a speed step, a running
+    direction); empty: any value in [lo, hi]. A scene is checked against them when it is read.
     """
 
     unit: str
     lo: float
     hi: float
     description: str
+    choices: tuple[float, ...] = ()
+
+    def check_choice(self, name: str, value: float) -> float:
+        """``value`` if it is one of ``choices`` (or there are none), else a ParameterError naming ``name``."""
+        if self.choices and value not in self.choices:
+            raise ParameterError(name, value, "one of " + ", ".join(f"{c:g}" for c in self.choices)
+                                 + f" ({self.description})")
+        return value
 
 
 @dataclass(frozen=True)
@@ -161,6 +171,11 @@ class PointSimulation(ABC):
         """Feed the instruments with the gate's true signals: the log record and the truth."""
 
 
+MAX_GATE_SAMPLES = 250_000
+"""Most samples per channel one gate may hold: the simulated recorders' capacity (a stand-B gate
+costs ~2 kB of working memory per sample, so ~0.5 GB at this limit) [1]."""
+
+
 class Stand(ABC):
     """A test stand built from a scene; one instance per run.
 
@@ -185,6 +200,13 @@ class Stand(ABC):
     def resolve_effects(cls, effects: Mapping[str, Mapping[str, float]]) -> dict[str, dict[str, float]]:
         """The named effects with every parameter filled in (EffectSpec defaults) and range-checked
         (named errors). The scene loader calls it, so a bad value fails when the scene is read."""
+
+    @classmethod
+    def gate_sample_rate_Hz(cls, parameters: Mapping[str, float]) -> float:
+        """The highest rate [Hz] at which a gate is sampled with these parameter overrides (its
+        recorders and true signals); the longest gate is MAX_GATE_SAMPLES at this rate. Default:
+        0 (no limit), for a stand that stores no samples."""
+        return 0.0
 
     @abstractmethod
     def calibrate(self, seed: int) -> Mapping[str, object]:

@@ -20,6 +20,7 @@ import numpy as np
 import pandas as pd
 
 from rig import validate
+from rig.errors import ParameterError
 from rig.logbook import (Channel, Counter, CounterReadings, LogSchema, PointRecord, Quantity, check_log,
                          read_counters, read_readings, read_settings)
 from rig.stands.base import (EffectSpec, GateData, ParameterSpec, PointOutcome, PointSimulation, SettingSpec,
@@ -94,6 +95,10 @@ class FakePoint(PointSimulation):
         return PointOutcome(record, truth, SettleReport(0.0, "", 0.0, self.start))
 
 
+MAX_LOAD_N = 900.0
+"""Loads above this raise a ParameterError when the point starts (its SettingSpec allows 1000 N)."""
+
+
 class FakeStand(Stand):
     """The contract with trivial physics (module docstring); counts its calibrations."""
 
@@ -145,6 +150,8 @@ class FakeStand(Stand):
         return self._calibration
 
     def start_point(self, index, settings, previous, seed) -> FakePoint:
+        if settings["load_N"] > MAX_LOAD_N:  # a named error inside a point (like stand A's stall)
+            raise ParameterError("load_N", settings["load_N"], f"at most {MAX_LOAD_N:g} N (the fake stand's stall)")
         return FakePoint(self, index, settings, previous, seed)
 
     def reduce_log(self, log_path, contact_law) -> pd.DataFrame:

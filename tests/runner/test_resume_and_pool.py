@@ -10,6 +10,7 @@ from unittest import mock
 
 import pytest
 
+from rig.errors import ParameterError
 from rig.logbook import staging_dir
 from rig.runner import run_scene
 from rig.scenes import parse_scene
@@ -84,3 +85,16 @@ def test_two_jobs_stop_where_one_job_stops(tmp_path):
     two = run_scene(scene, tmp_path / "two", jobs=2, progress=False)
     assert one.stopped and two.stopped and one.in_log == two.in_log == 2
     assert_same_log(tmp_path / "one" / "log.h5", tmp_path / "two" / "log.h5")
+
+
+@pytest.mark.parametrize("jobs", [1, 2])
+def test_a_named_error_inside_a_point_arrives_whole_and_removes_the_staging_folder(tmp_path, jobs):
+    # simpy rebuilt a point's error as type(error)(*error.args) - a TypeError for ParameterError
+    # (issue 14 item 1); a worker sent it back as text. Now it is the error the stand raised.
+    scene = parse_scene(scene_text(NO_FIGURES | {"load_N = [5.0, 10.0, 20.0, 25.0]": "load_N = [5.0, 950.0]"}),
+                        name="fake")
+    with pytest.raises(ParameterError) as raised:
+        run_scene(scene, tmp_path, jobs=jobs, progress=False)
+    assert raised.value.name == "load_N" and raised.value.value == 950.0
+    assert str(raised.value) == "load_N = 950.0 is not valid; valid: at most 900 N (the fake stand's stall)"
+    assert not staging_dir(tmp_path / "log.h5").exists() and not (tmp_path / "log.h5").exists()

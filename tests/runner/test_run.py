@@ -105,3 +105,11 @@ def test_progress_bar_only_on_a_terminal_unless_asked(tmp_path, capsys):
     assert capsys.readouterr().err == ""
     run(tmp_path / "loud", NO_FIGURES, progress=True)
     assert "4/4" in capsys.readouterr().err
+
+
+def test_a_run_whose_every_point_failed_says_so_and_reduces_nothing(tmp_path):
+    report = run(tmp_path, NO_FIGURES | {"load_N = [5.0, 10.0, 20.0, 25.0]": "load_N = [500.0]",
+                                         "mu = 0.3": "mu = 0.3\nsettle_tau_s = 1.0"})  # 10 -> 500 N: no settling
+    assert [f.index for f in report.failures] == [0] and report.files == ("log.h5", "summary.txt")
+    assert "not reduced: the log holds no operating point (every point failed)" in report.summary
+    assert not (tmp_path / "reduced.csv").exists()

@@ -18,7 +18,7 @@ PULL_OUT_RATIO = 2.5  # pull-out over rated torque of an induction motor [1] ([a
 
 @dataclass(frozen=True)
 class WormDrive:
-    """Motor 23 through the self-locking worm gear 22, seen at the roller shaft 16.
+    """Motor 23 through the worm gear 22 (self-locking: assumed), seen at the roller shaft 16.
 
     The induction motor's torque is linear in its slip near synchronism and saturates smoothly
     at the pull-out torque: T_m = T_max tanh(k_m (w_set - w)/T_max) (w at the motor) [assumed].

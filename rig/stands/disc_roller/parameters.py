@@ -45,7 +45,8 @@ PARAMETERS: Mapping[str, ParameterSpec] = {
     "worm_ratio": ParameterSpec(20.0, "1", 5.0, 80.0, "[assumed] seed notes 4.2: 1440 rpm / 20 = 72 rpm"),
     "worm_efficiency": ParameterSpec(
         0.45, "1", 0.2, 0.95,
-        "[assumed] self-locking worm (text) needs a forward efficiency below 0.5; seed notes 4.2 say 0.6-0.75",
+        "[assumed] a self-locking worm (assumed: the seed names only 'the worm gear 22') needs a forward "
+        "efficiency below 0.5; seed notes 4.2 say 0.6-0.75",
     ),
     "motor_rated_torque_N_m": ParameterSpec(2.45, "N m", 0.1, 50.0, "[computed] 370 W at 1440 rpm (seed notes 4.2 motor)"),
     "motor_rated_slip": ParameterSpec(0.04, "1", 0.005, 0.2, "[assumed] 1440 of 1500 rpm synchronous"),
@@ -135,8 +136,8 @@ SETTINGS: Mapping[str, SettingSpec] = {
     "normal_force_N": SettingSpec("N", 1.0, 200.0, "dead-weight load F_N (text: 9, 21, 36, 144 N)"),
     "l_m": SettingSpec("m", -0.025, 0.025, "rolling-point offset l along the contact line, screw 19 (text: 0...+-20 mm)"),
     "sigma_rad": SettingSpec("rad", -0.2, 0.2, "twist of body 14, screw 15: c = e sin(sigma), eq. (36)"),
-    "speed_step": SettingSpec("1", 1.0, 3.0, "drive speed 1, 2, 3 = roller 24, 48, 72 rpm (text)"),
-    "direction": SettingSpec("1", -1.0, 1.0, "+1 forward, -1 reverse running (text: both directions)"),
+    "speed_step": SettingSpec("1", 1.0, 3.0, "drive speed 1, 2, 3 = roller 24, 48, 72 rpm (text)", (1.0, 2.0, 3.0)),
+    "direction": SettingSpec("1", -1.0, 1.0, "+1 forward, -1 reverse running (text: both directions)", (-1.0, 1.0)),
 }
 
 
@@ -284,10 +285,6 @@ def point_settings(settings: Mapping[str, float]) -> PointSettings:
     for name, spec in SETTINGS.items():
         if name not in settings:
             raise ParameterError(name, None, f"a value in [{spec.lo:g}, {spec.hi:g}] {spec.unit} (required per point)")
-        values[LOG_NAMES[name]] = validate.number(name, settings[name], spec.lo, spec.hi)
-    if values["speed_step"] not in (1.0, 2.0, 3.0):
-        raise ParameterError("speed_step", values["speed_step"], "1, 2 or 3 (roller 24, 48, 72 rpm)")
-    if values["direction"] not in (-1.0, 1.0):
-        raise ParameterError("direction", values["direction"], "+1 (forward) or -1 (reverse)")
+        values[LOG_NAMES[name]] = spec.check_choice(name, validate.number(name, settings[name], spec.lo, spec.hi))
     return PointSettings(values["normal_force"], values["l"], values["sigma"],
                          int(values["speed_step"]), int(values["direction"]))

@@ -16,6 +16,7 @@ from rig import validate
 from rig.contact.surrogate import TableDomain
 from rig.errors import ParameterError
 from rig.logbook import LogSchema
+from rig.reduction.iteration import ReductionSettings
 from rig.stands.base import ContactSpec, DriveMode, PointSimulation, Stand
 from rig.stands.contact_law import make_contact_law
 from rig.stands.disc_roller import paper_alpha
@@ -26,7 +27,9 @@ from rig.stands.disc_roller.drive_train import DriveTrain
 from rig.stands.disc_roller.instruments import CHANNELS, InstrumentEffects, calibrate
 from rig.stands.disc_roller.swinging_drive import SwingingDrive
 
-ALPHA_BAND = 4.0  # the law's alpha' domain: [alpha/4, 4 alpha] around the point's value [1]
+ALPHA_BAND = 4.0  # the law's alpha' domain: [alpha/4, 4 alpha] around the point's value [1] ...
+START_MARGIN = 1.25  # ... widened to reach this factor past the reduction's start alpha'(mu_start) [1]
+REDUCTION_START = ReductionSettings()  # the reduction's default settings (its mu_start)
 LawFactory = Callable[[float], Law]
 """b/a [1] -> canonical contact law (vectorised)."""
 
@@ -76,6 +79,11 @@ class DiscRollerStand(Stand):
         self._laws: dict[float, Law] = {}
         self._calibrations: dict[int, dict] = {}
 
+    @classmethod
+    def gate_sample_rate_Hz(cls, parameters: Mapping[str, float]) -> float:
+        """The recorder's rate [Hz] (every channel and the true signals are sampled at it)."""
+        return P.resolve_parameters(parameters).recorder_rate
+
     # ---- components -------------------------------------------------------------------------
     def law_domain(self, b_over_a: float) -> TableDomain:
         """Canonical (l/a, c/a, alpha') domain the stand evaluates the law in at this b/a (alpha' of eq. 21)."""
@@ -83,7 +91,9 @@ class DiscRollerStand(Stand):
         limit = p.rolling_point_limit
         c_max = p.pivot_distance * math.sin(P.SETTINGS["sigma_rad"].hi) / p.half_length
         alpha = 10.0 * p.mu * b_over_a * p.radius_c / p.roller_radius
-        return TableDomain((-limit, limit), (-c_max, c_max), (alpha / ALPHA_BAND, alpha * ALPHA_BAND))
+        start = alpha * REDUCTION_START.mu_start / p.mu  # alpha' ~ mu: where the reduction's iteration starts
+        return TableDomain((-limit, limit), (-c_max, c_max), (min(alpha / ALPHA_BAND, start / START_MARGIN),
+                                                               max(alpha * ALPHA_BAND, start * START_MARGIN)))
 
     def alpha_factor(self, b_over_a: float) -> float:
         """alpha' the contact runs at over eq. (21)'s [1]: 1, or alpha'_paper/alpha'_Hertz with the

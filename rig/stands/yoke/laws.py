@@ -6,8 +6,9 @@ Domain [our choice, docs/stand-a.md]:
   start-up transient (C at A1, l/a ~ 35) is continued outside (rig.stands.yoke.contact_forces);
 * c/a in [0, max(C_MIN, Delta h/a)]: c = Delta h (l1 - l)/(l1 - l2) lies in [0, Delta h) for
   forward running (eq. 32); C_MIN = 0.9 lets Delta h = 0 and 1.06 mm (a = 1.215 mm) share a table;
-* alpha' (eq. 21, line contact) over mu in [MU_MIN, MU_MAX] and the l range: the reduction's
-  mu <-> alpha' iteration must stay inside it; the simulation's mu must lie in it.
+* alpha' (eq. 21, line contact) over mu in [MU_MIN, MU_MAX] and the l range, widened by
+  ALPHA_MARGIN at both ends: the reduction's mu <-> alpha' iteration and its perturbed
+  evaluations must stay inside it; the simulation's mu must lie in [MU_MIN, MU_MAX].
 """
 
 from __future__ import annotations
@@ -24,6 +25,8 @@ from rig.stands.yoke.contact_forces import Law
 L_MAX = 2.5  # [1]
 C_MIN = 0.9  # [1]
 MU_MIN, MU_MAX = 0.1, 1.2  # a-priori range of friction coefficients of the pair [1] (assumed)
+ALPHA_MARGIN = 1.5  # the alpha' domain reaches this factor past the range's ends: a reduction at mu = MU_MIN
+# or MU_MAX perturbs its inputs (first-order uncertainties) and moves alpha' by ~15 % (issue 14) [1]
 SHAPE = "line"  # stand A: line contact (seed 000 3.1: "Linear contact was applied")
 
 LawFactory = Callable[[ContactSpec, str, float, TableDomain], Law]
@@ -41,8 +44,8 @@ def domain(geometry: StandAGeometry, b_over_a: float, mu: float) -> TableDomain:
 
     l_lo = max(-L_MAX * g.a, g.l2 + 0.1 * span)  # forward running has l2 < l < l1
     l_hi = min(L_MAX * g.a, g.l1)
-    lo = alpha_prime_line_contact(MU_MIN, b_over_a, v_over_spin(l_lo), g.radius_x)
-    hi = alpha_prime_line_contact(MU_MAX, b_over_a, v_over_spin(l_hi), g.radius_x)
+    lo = alpha_prime_line_contact(MU_MIN, b_over_a, v_over_spin(l_lo), g.radius_x) / ALPHA_MARGIN
+    hi = alpha_prime_line_contact(MU_MAX, b_over_a, v_over_spin(l_hi), g.radius_x) * ALPHA_MARGIN
     return TableDomain((-L_MAX, L_MAX), (0.0, max(C_MIN, g.delta_h / g.a)), (lo, hi))
 
 

@@ -25,6 +25,7 @@ from rig.stands.yoke import instruments, laws
 from rig.stands.yoke import parameters as spec
 from rig.stands.yoke.brake import critical_gain
 from rig.stands.yoke.contact_forces import StandAContact
+from rig.stands.yoke.integration import GATE_SAMPLE_RATE_HZ
 from rig.stands.yoke.point import YokePoint
 from rig.stands.yoke.reduction import reduce_log
 
@@ -51,12 +52,18 @@ class YokeStand(Stand):
         validate.known_keys("stand A effect", effects, spec.EFFECTS)
         return {name: spec.effect_values(name, given) for name, given in effects.items()}
 
+    @classmethod
+    def gate_sample_rate_Hz(cls, parameters: Mapping[str, float]) -> float:
+        """The true signals' rate, the dynamometer's or the balance's, whichever is highest [Hz]."""
+        p = spec.resolve(parameters)
+        return max(GATE_SAMPLE_RATE_HZ, p.dynamometer_rate_Hz, p.balance_rate_Hz)
+
     def __init__(self, parameters: Mapping[str, float], effects: Mapping[str, Mapping[str, float]],
                  contact: ContactSpec, drive: DriveMode, *, law_factory: laws.LawFactory | None = None) -> None:
         self.params = spec.resolve(parameters)
         self.law = laws.LawCache(contact, self.params.mu, law_factory)  # law(b_over_a, geometry) -> (law, domain)
         if not isinstance(drive, DriveMode):
-            raise ParameterError("drive", drive, "one of " + ", ".join(f"DriveMode.{m.name}" for m in DriveMode))
+            raise ParameterError("drive", drive, "one of " + ", ".join(repr(m.value) for m in DriveMode))
         self.effects = self.resolve_effects(effects)
         self._check_effects(drive)
         self.contact_spec = contact
@@ -68,7 +75,7 @@ class YokeStand(Stand):
         if drive is DriveMode.QUASI_STATIC:
             for name in DYNAMIC_ONLY:
                 if name in self.effects:
-                    raise ParameterError(f"effects.{name}", "named", "only with drive = DriveMode.DYNAMIC (the "
+                    raise ParameterError(f"effects.{name}", "named", "only with scene.drive = 'dynamic' (the "
                                          "quasi-static drive has no dynamics)")
         if "brake_friction_fluctuation" in self.effects and "brake_dynamics" not in self.effects:
             raise ParameterError("effects.brake_friction_fluctuation", "named without brake_dynamics",

@@ -77,8 +77,14 @@ def steady_state(contact: StandAContact, omega_1: float, brake_moment: float, *,
     lo, hi = g.l2 + EDGE * span, g.l1 - EDGE * span
     r_lo, r_hi = residual(lo), residual(hi)
     if not (r_lo < 0.0 < r_hi):
+        def held(l: float, r: float) -> float:  # the set-point whose residual is 0 at l: (T2 - friction)/tanh
+            th = math.tanh(omega_2(l) / brake_speed_eps)
+            return t_set + r / th if th != 0.0 else math.copysign(math.inf, r)
+
+        ends = (held(lo, r_lo), held(hi, r_hi))
+        bound = f"at least {min(ends):.4g}" if r_lo >= 0.0 else f"at most {max(ends):.4g}"
         raise ParameterError("brake_setpoint_N_m", brake_moment,
-                             f"({t_set + r_lo:.4g}, {t_set + r_hi:.4g}) N m at F_N = {contact.normal_force:g} N, "
+                             f"{bound} N m at F_N = {contact.normal_force:g} N, "
                              f"w1 = {w1:g} rad/s: the moments the contact can hold on wheel 2")
     l = brentq(residual, lo, hi, xtol=1e-12, rtol=1e-15, maxiter=200)
     w2 = omega_2(l)

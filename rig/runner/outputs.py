@@ -1,0 +1,87 @@
+"""The output files of a run, written so that a kill never leaves a half-written or a stale one.
+
+Every output (reduced.csv, the PNG figures, summary.txt, ...) is first written whole into the
+staging folder ``.outputs.tmp/`` inside the output folder; when all are written they are
+fsynced and moved into the output folder with ``os.replace`` (atomic), summary.txt last. Before a
+run replaces its log, the outputs of the previous run (every name of OUTPUT_NAMES in the folder)
+are removed, summary.txt first, so that no output stays beside a log it does not describe.
+
+A kill at any moment therefore leaves every output file either absent or complete (never
+truncated), and a summary.txt only beside the outputs of the log it describes: while the new
+outputs are being drawn the folder holds the previous run's complete set (or, once the new log
+is in place, none); then the new complete set appears within a few renames. A leftover staging
+folder of a killed process is removed by the next run.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import shutil
+from collections.abc import Iterator
+from pathlib import Path
+
+from rig.errors import ParameterError
+from rig.logbook.atomic import fsync_dir, fsync_file
+from rig.scenes.stand_scene import PAPER_FIGURE_NAMES
+
+STAGING_NAME = ".outputs.tmp"
+SUMMARY_NAME = "summary.txt"
+REDUCED_CSV = "reduced.csv"
+REDUCED_FIGURE = "reduced_vs_truth.png"
+CHARACTERISTICS_CSV = "characteristics.csv"
+CHARACTERISTICS_FIGURE = "characteristics.png"
+OSCILLATION_CSV = "oscillation_sweep.csv"
+OSCILLATION_FIGURE = "oscillation_sweep.png"
+WORK_MAP_FIGURE = "work_map.png"
+
+OUTPUT_NAMES = (SUMMARY_NAME, REDUCED_CSV, REDUCED_FIGURE, CHARACTERISTICS_CSV, CHARACTERISTICS_FIGURE,
+                OSCILLATION_CSV, OSCILLATION_FIGURE, WORK_MAP_FIGURE, *(f"{name}.png" for name in PAPER_FIGURE_NAMES))
+"""Every file a run may write besides its log (summary.txt first: it is removed first, renamed last)."""
+
+
+def output_folder(out_dir: object) -> Path:
+    """``out_dir`` created if needed; a named error when it cannot be (a file of that name, no permission)."""
+    folder = Path(out_dir)
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except FileExistsError:
+        raise ParameterError("output folder", str(folder),
+                             "a folder or a new name (a file of that name exists)") from None
+    except OSError as error:
+        raise ParameterError("output folder", str(folder), "a folder this user can create and write",
+                             hint=error.strerror or str(error)) from None
+    return folder
+
+
+def remove_stale(out_dir: Path) -> None:
+    """Remove the outputs a previous run left in ``out_dir`` (summary.txt first)."""
+    for name in OUTPUT_NAMES:
+        (out_dir / name).unlink(missing_ok=True)
+    fsync_dir(out_dir)
+
+
+@contextlib.contextmanager
+def staged_outputs(out_dir: Path, *, replace_previous: bool = False) -> Iterator[Path]:
+    """Yield the staging folder to write outputs into; when the block ends without an error, move
+    every file written there into ``out_dir`` (summary.txt last), after removing the previous run's
+    outputs if ``replace_previous``. The staging folder is always removed."""
+    staging = out_dir / STAGING_NAME
+    shutil.rmtree(staging, ignore_errors=True)
+    try:
+        staging.mkdir()
+    except OSError as error:
+        raise ParameterError("output folder", str(out_dir), "a folder this user can write",
+                             hint=error.strerror or str(error)) from None
+    try:
+        yield staging
+        names = sorted((p.name for p in staging.iterdir() if p.is_file()), key=lambda name: name == SUMMARY_NAME)
+        for name in names:
+            fsync_file(staging / name)
+        if replace_previous:
+            remove_stale(out_dir)
+        for name in names:
+            os.replace(staging / name, out_dir / name)
+        fsync_dir(out_dir)
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
