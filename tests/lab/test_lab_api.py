@@ -165,7 +165,7 @@ def test_concurrent_requests_on_one_session_keep_it_consistent(lab_server):
 
     def control():
         statuses.append(lab_server.request("POST", f"api/sessions/{sid}/controls",
-                                           {"settings": {"brake_setpoint_N_m": -0.4}})[0])
+                                           {"settings": {"brake_setpoint_N_m": 0.4}})[0])
 
     threads = [threading.Thread(target=f) for f in (record, control, record, record)]
     for thread in threads:

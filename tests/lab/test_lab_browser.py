@@ -172,16 +172,16 @@ def test_a_reload_and_a_second_tab_share_one_uncorrupted_session(lab_server, bro
     browser.switch_to.new_window("tab")
     _open(browser, url)
     _settled(browser)
-    _apply(browser, brake_setpoint_N_m="-0.6")
+    _apply(browser, brake_setpoint_N_m="0.6")
     _record(browser, "2")
     browser.close()
     browser.switch_to.window(first)
     _wait(browser, lambda d: len(d.find_elements(By.CSS_SELECTOR, "#points tbody tr")) == 2)  # synced
-    assert browser.find_element(By.ID, "brake_setpoint_N_m").get_attribute("value") == "-0.6"
+    assert browser.find_element(By.ID, "brake_setpoint_N_m").get_attribute("value") == "0.6"
     browser.refresh()
     _wait(browser, lambda d: len(d.find_elements(By.CSS_SELECTOR, "#points tbody tr")) == 2)
     rows = [r.text.split() for r in browser.find_elements(By.CSS_SELECTOR, "#points tbody tr")]
-    assert [r[0] for r in rows] == ["0", "1"] and [r[3] for r in rows] == ["0", "-0.6"]
+    assert [r[0] for r in rows] == ["0", "1"] and [r[3] for r in rows] == ["0", "0.6"]
     reduced = _rig_reduce(_save(browser))
     assert sorted(reduced) == [0, 1]
 
