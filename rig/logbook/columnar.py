@@ -47,6 +47,7 @@ class _Layout:
     def __init__(self) -> None:
         self.scalars: dict[str, dict[str, str]] = {kind: {} for kind in SCALAR_KINDS}
         self.calibration: dict[tuple[str, str], str] = {}
+        self.records: set[str] = set()
         self.counters: set[str] = set()
         self.has_counters = False
         self.channels: dict[str, str] = {}
@@ -64,6 +65,7 @@ class _Layout:
         for kind in SCALAR_KINDS:
             for name, _, unit in h[kind]:
                 self._unit(self.scalars[kind], name, unit, f"{kind}[{name!r}].unit")
+        self.records.update(h["records"])
         for rec, name, _, unit in h["calibration"]:
             self._unit(self.calibration, (rec, name), unit, f"calibration[{rec!r}][{name!r}].unit")
         if h["counters"] is not None:
@@ -142,8 +144,10 @@ def write_columnar(root: h5py.Group, entries: Callable[[], Iterable[Entry]]) -> 
         for name in sorted(scalars[kind]):
             _column(group, name, scalars[kind][name], layout.scalars[kind][name])
     calibration_group = points.create_group(L.CALIBRATION_GROUP)
+    for rec in sorted(layout.records):
+        calibration_group.create_group(rec)
     for rec, name in sorted(calibration):
-        _column(calibration_group.require_group(rec), name, calibration[(rec, name)], layout.calibration[(rec, name)])
+        _column(calibration_group[rec], name, calibration[(rec, name)], layout.calibration[(rec, name)])
     if layout.has_counters:
         counters_group = points.create_group(L.COUNTERS_GROUP)
         _column(counters_group, L.GATE_TIME_DATASET, gate, "s")
@@ -204,9 +208,15 @@ class ColumnarLog:
         return {name: self._quantity_rows(group, name) for name in group if name != L.INDEX_DATASET}
 
     def calibration(self) -> dict[tuple[str, str], tuple[np.ndarray, str]]:
+        """{(record, field): (rows, unit)}; see also :meth:`empty_records`."""
         records = h5format.subgroup(self.points, L.CALIBRATION_GROUP)
         return {(rec, name): self._quantity_rows(h5format.subgroup(records, rec), name)
                 for rec in records for name in h5format.subgroup(records, rec)}
+
+    def empty_records(self) -> list[str]:
+        """Calibration records without fields (every point has them, empty)."""
+        records = h5format.subgroup(self.points, L.CALIBRATION_GROUP)
+        return [rec for rec in records if len(h5format.subgroup(records, rec)) == 0]
 
     def counters(self) -> tuple[np.ndarray, dict[str, tuple[np.ndarray, np.ndarray]]] | None:
         """(gate time rows [s], {name: (count rows, marks rows)}), or None without counters."""
@@ -280,6 +290,7 @@ class ColumnarLog:
         rows = range(self.n) if rows is None else list(rows)
         scalars = {kind: self.quantities(kind) for kind in ("settings", "readings")}
         calibration = self.calibration()
+        self._empty = self.empty_records()
         counters = self.counters()
         channels = {name: self.channel(name) for name in self.channel_names()}
         blocks = _blocks(list(rows), channels)
@@ -298,7 +309,7 @@ class ColumnarLog:
         def present(values: dict) -> dict[str, Quantity]:
             return {name: Quantity(float(v[row]), u) for name, (v, u) in values.items() if not np.isnan(v[row])}
 
-        records: dict[str, dict[str, Quantity]] = {}
+        records: dict[str, dict[str, Quantity]] = {rec: {} for rec in self._empty}
         for (rec, name), (values, unit) in calibration.items():
             if not np.isnan(values[row]):
                 records.setdefault(rec, {})[name] = Quantity(float(values[row]), unit)

@@ -57,6 +57,7 @@ def entry_of(point: PointRecord, truth: Mapping[str, Quantity]) -> Entry:
         "readings": _rows(point.readings),
         "calibration": [[rec, name, q.value, q.unit] for rec, fields in point.calibration.items()
                         for name, q in fields.items()],
+        "records": list(point.calibration),
         "truth": _rows(truth),
         "counters": counters,
         "channels": [[name, ch.unit, ch.sample_rate_Hz, ch.start_time_s, int(ch.samples.size)]
@@ -68,7 +69,7 @@ def entry_of(point: PointRecord, truth: Mapping[str, Quantity]) -> Entry:
 def record_of(entry: Entry) -> tuple[PointRecord, dict[str, Quantity]]:
     """The PointRecord and truth of an entry (checked again by the content classes)."""
     h = entry.header
-    calibration: dict[str, dict[str, Quantity]] = {}
+    calibration: dict[str, dict[str, Quantity]] = {rec: {} for rec in h["records"]}
     for rec, name, value, unit in h["calibration"]:
         calibration.setdefault(rec, {})[name] = Quantity(value, unit)
     counters = None

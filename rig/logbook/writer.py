@@ -87,8 +87,7 @@ class LogWriter:
             self.metadata = metadata
             self._frames = {}
         self._base = self._finished_points()
-        self._journal = open(self.parts / JOURNAL, "ab")  # noqa: SIM115 - closed by finalize / close
-        self._end = self._journal.tell()
+        self._end = sum(frame.length for frame in self._frames.values())
         self._synced = time.monotonic()
 
     @property
@@ -106,38 +105,32 @@ class LogWriter:
             raise ParameterError("point.index", point.index, "an index not yet written",
                                  hint=f"done: {sorted(self.done)}")
         frame = journal.encode(journal.entry_of(point, truth))
-        self._journal.write(frame)
-        self._journal.flush()
+        with open(self.parts / JOURNAL, "ab") as handle:
+            handle.write(frame)
+            if time.monotonic() - self._synced >= FSYNC_INTERVAL_S:
+                self._sync(handle)
         self._frames[point.index] = journal.Frame(point.index, self._end, len(frame))
         self._end += len(frame)
-        if time.monotonic() - self._synced >= FSYNC_INTERVAL_S:
-            self._sync()
 
     def finalize(self) -> Path:
         """Assemble ``path`` from the journal (atomically), remove the staging folder, return ``path``."""
         self._check_open()
-        self._sync()
+        with open(self.parts / JOURNAL, "ab") as handle:
+            self._sync(handle)
         if self._frames or not self._base:
             with atomic.new_hdf5(self.path, tmp_folder=self.parts) as log:
                 with h5py.File(self.parts / RUN_PART, "r") as run:
                     h5format.write_metadata(log, h5format.read_metadata(run))
                 write_columnar(log, self._entries)
-        self._journal.close()
         self._finalized = True
         self._clear_staging()
         return self.path
 
-    def close(self) -> None:
-        """Stop writing without finalizing (the staging folder stays, so a new writer resumes)."""
-        if not self._journal.closed:
-            self._sync()
-            self._journal.close()
-
     # ------------------------------------------------------------------------- internals
 
-    def _sync(self) -> None:
-        self._journal.flush()
-        os.fsync(self._journal.fileno())
+    def _sync(self, handle) -> None:
+        handle.flush()
+        os.fsync(handle.fileno())
         self._synced = time.monotonic()
 
     def _entries(self) -> Iterator[journal.Entry]:

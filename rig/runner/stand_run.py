@@ -1,6 +1,9 @@
 """A stand scene from start to outputs: log.h5, reduced.csv, the figure and summary.txt in one folder.
 
-Order: open the log (resuming an interrupted run of the same scene) -> build the stand with the
+Order: lock the folder (rig.runner.folder_lock: a second run into it is refused by name) ->
+open the log (resuming an interrupted run of the same scene; the points of a finished log of
+the same run are not simulated again, so a run killed while writing its outputs only redoes
+those) -> build the stand with the
 scene's effects only -> calibrate once -> sweep the points not yet logged, writing each as it
 finishes -> finalize log.h5 -> reduce (reduced.csv and ``/reduced`` in the log) -> figure ->
 summary.txt. The points run in this process, on a local process pool (``jobs`` > 1) or on a
@@ -18,6 +21,7 @@ from rig import validate
 from rig.campaigns import paper_figure
 from rig.logbook import LogWriter, RunMetadata, point_indices, read_point, utc_timestamp
 from rig.runner.dask_pool import check_scheduler
+from rig.runner.folder_lock import folder_lock
 from rig.runner.figures import FIGURE_NAME, reduced_vs_truth_figure
 from rig.runner.reduction import Reduction, read_truth_if_any, reduce_to_files
 from rig.runner.summary import RunFacts, summary_text
@@ -32,7 +36,7 @@ MAX_JOBS = 256
 @dataclass(frozen=True)
 class RunReport:
     """What a run wrote: the folder, the files (names), points planned / in the log / resumed,
-    the failures, whether it stopped early, and the summary text."""
+    the failures, whether it stopped early, the summary text and the damaged points of the log."""
 
     out_dir: Path
     files: tuple[str, ...]
@@ -42,6 +46,7 @@ class RunReport:
     failures: tuple[Failure, ...]
     stopped: bool
     summary: str
+    damaged: tuple[int, ...] = ()
 
 
 def _settle_times(log_path: Path) -> list[float]:
@@ -64,6 +69,12 @@ def run_stand_scene(scene: StandScene, out_dir: Path, *, jobs: int = 1, schedule
         scheduler = check_scheduler(scheduler, jobs)
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
+    with folder_lock(out_dir, f"rig run {scene.name}"):
+        return _run_locked(scene, out_dir, jobs, scheduler, progress)
+
+
+def _run_locked(scene: StandScene, out_dir: Path, jobs: int, scheduler: str | None, progress: bool | None) -> RunReport:
+    """The run, with the folder's lock held (a finished log of this run is reused: rig.logbook.LogWriter)."""
     log_path = out_dir / LOG_NAME
     writer = LogWriter(log_path, RunMetadata(scene.text, scene.seed, scene.stand, utc_timestamp()))
     plan = scene.procedure.points()
@@ -81,8 +92,7 @@ def run_stand_scene(scene: StandScene, out_dir: Path, *, jobs: int = 1, schedule
     if scene.outputs.reduce:
         reduction = reduce_to_files(stand, log_path, scene.contact, out_dir)
         files.append(reduction.csv.name)
-        if reduction.problem:
-            problems.append(reduction.problem)
+        problems.extend(reduction.problems)
     campaign_lines: tuple[str, ...] = ()
     if scene.outputs.figures and reduction is not None:
         figure = reduced_vs_truth_figure(reduction.table, plan, scene.procedure, out_dir / FIGURE_NAME,
@@ -103,4 +113,4 @@ def run_stand_scene(scene: StandScene, out_dir: Path, *, jobs: int = 1, schedule
     text = summary_text(scene, facts, None if reduction is None else reduction.table, problems, files, campaign_lines)
     (out_dir / SUMMARY_NAME).write_text(text, encoding="utf-8")
     return RunReport(out_dir, tuple(files), len(plan), facts.resumed + facts.written_now, facts.resumed,
-                     tuple(sweep.failures), sweep.stopped, text)
+                     tuple(sweep.failures), sweep.stopped, text, () if reduction is None else reduction.damaged)

@@ -1,0 +1,64 @@
+"""One run folder, one writer: an OS file lock on ``<folder>/rig.lock`` held while a run (or a
+reduction) works in the folder.
+
+The lock is the operating system's (``fcntl.flock`` on POSIX, ``msvcrt.locking`` on Windows): it
+belongs to the open file, so it goes away with the process that holds it - a killed run never
+leaves a stale lock, and the next run simply takes it and resumes. The file itself stays (an
+empty lock file is harmless); it holds the pid and start time of the last holder, which the
+error of a second run quotes. A second ``rig run`` (or ``rig reduce``) on a locked folder does
+not wait: it raises :class:`FolderLockedError` at once.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+from collections.abc import Iterator
+from pathlib import Path
+
+from rig.errors import RigError
+from rig.logbook import utc_timestamp
+
+LOCK_NAME = "rig.lock"
+
+if os.name == "posix":
+    import fcntl
+
+    def _try_lock(fd: int) -> bool:
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            return False
+        return True
+else:  # pragma: no cover - Windows
+    import msvcrt
+
+    def _try_lock(fd: int) -> bool:
+        try:
+            msvcrt.locking(fd, msvcrt.LK_NBLCK, 1)
+        except OSError:
+            return False
+        return True
+
+
+class FolderLockedError(RigError):
+    """Another process holds the folder's lock (message: the folder, the holder's pid and start)."""
+
+
+@contextlib.contextmanager
+def folder_lock(folder: Path, what: str) -> Iterator[Path]:
+    """Hold the lock of ``folder`` (created if needed) for the block; ``what`` says who holds it
+    (e.g. ``"rig run fig10"``). Raises FolderLockedError naming the holder if another process has it."""
+    folder = Path(folder)
+    path = folder / LOCK_NAME
+    fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
+    try:
+        if not _try_lock(fd):
+            holder = os.pread(fd, 4096, 0).decode("utf-8", "replace").strip() or "another process"
+            raise FolderLockedError(f"{folder} is in use by {holder}; wait for it to finish or stop it, "
+                                    "or choose another output folder")
+        os.ftruncate(fd, 0)
+        os.pwrite(fd, f"process {os.getpid()} ({what}, started {utc_timestamp()})\n".encode(), 0)
+        yield path
+    finally:
+        os.close(fd)  # releases the lock
