@@ -75,6 +75,8 @@ class LogWriter:
             raise ParameterError("path", str(self.path), "a file in an existing folder")
         self.parts = staging_dir(self.path)
         self._finalized = False
+        for leftover in self.path.parent.glob(f".{self.path.name}.*{atomic.TMP_SUFFIX}"):
+            leftover.unlink()  # of a write_reduced killed half-way (never read)
         if (self.parts / RUN_PART).is_file():
             self._remove_leftovers()
             self.metadata = self._resume(metadata)

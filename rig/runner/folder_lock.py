@@ -3,9 +3,10 @@ reduction) works in the folder.
 
 The lock is the operating system's (``fcntl.flock`` on POSIX, ``msvcrt.locking`` on Windows): it
 belongs to the open file, so it goes away with the process that holds it - a killed run never
-leaves a stale lock, and the next run simply takes it and resumes. The file itself stays (an
-empty lock file is harmless); it holds the pid and start time of the last holder, which the
-error of a second run quotes. A second ``rig run`` (or ``rig reduce``) on a locked folder does
+leaves a stale lock, and the next run simply takes it and resumes. The file holds the pid and
+start time of its holder, which the error of a second run quotes; the holder removes it when
+it is done (a killed holder leaves the file, unlocked and harmless). A taker checks that the
+file it locked is still the one at the path, so removing it never lets two runs in. A second ``rig run`` (or ``rig reduce``) on a locked folder does
 not wait: it raises :class:`FolderLockedError` at once.
 """
 
@@ -51,14 +52,28 @@ def folder_lock(folder: Path, what: str) -> Iterator[Path]:
     (e.g. ``"rig run fig10"``). Raises FolderLockedError naming the holder if another process has it."""
     folder = Path(folder)
     path = folder / LOCK_NAME
-    fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
-    try:
+    while True:
+        fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
         if not _try_lock(fd):
             holder = os.pread(fd, 4096, 0).decode("utf-8", "replace").strip() or "another process"
+            os.close(fd)
             raise FolderLockedError(f"{folder} is in use by {holder}; wait for it to finish or stop it, "
                                     "or choose another output folder")
+        if _same_file(fd, path):  # not a file its last holder removed meanwhile
+            break
+        os.close(fd)
+    try:
         os.ftruncate(fd, 0)
         os.pwrite(fd, f"process {os.getpid()} ({what}, started {utc_timestamp()})\n".encode(), 0)
         yield path
     finally:
+        with contextlib.suppress(OSError):
+            path.unlink()  # before the lock goes: a run waiting on this file retries on a new one
         os.close(fd)  # releases the lock
+
+
+def _same_file(fd: int, path: Path) -> bool:
+    try:
+        return os.path.samestat(os.fstat(fd), os.stat(path))
+    except FileNotFoundError:
+        return False
