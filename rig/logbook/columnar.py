@@ -30,15 +30,27 @@ SAMPLES_PER_BLOCK = 1 << 20
 SCALAR_KINDS = ("settings", "readings", "truth")
 
 
-def _chunks(n: int) -> tuple[int]:
-    return (int(min(max(n, 1), SAMPLES_PER_BLOCK // 8)),)
+MAX_CHUNK = 1 << 16
+"""Largest chunk of a dataset [elements] (512 KiB of float64)."""
+COLUMN_FILTERS = {"compression": "gzip", "compression_opts": 4, "shuffle": True}
+"""Filters of the one-row-per-point columns (deflate is in every HDF5 build: plain h5py reads it);
+the channels' samples stay unfiltered."""
 
 
-def _column(group: h5py.Group, name: str, values: np.ndarray, unit: str | None) -> None:
-    """An extendable (chunked, unlimited) 1-D dataset, with ``units`` unless ``unit`` is None."""
-    ds = group.create_dataset(name, data=values, chunks=_chunks(values.size), maxshape=(None,))
+def chunks_for(n: int) -> tuple[int]:
+    """Chunk length for a 1-D dataset of ``n`` elements: equal chunks of at most MAX_CHUNK, so
+    that the last one is (nearly) full and the file holds little unused space."""
+    n = max(n, 1)
+    count = -(-n // MAX_CHUNK)
+    return (-(-n // count),)
+
+
+def column(group: h5py.Group, name: str, values: np.ndarray, unit: str | None) -> h5py.Dataset:
+    """An extendable (chunked, unlimited, deflated) 1-D dataset, with ``units`` unless ``unit`` is None."""
+    ds = group.create_dataset(name, data=values, chunks=chunks_for(values.size), maxshape=(None,), **COLUMN_FILTERS)
     if unit is not None:
         ds.attrs[L.ATTR_UNITS] = unit
+    return ds
 
 
 class _Layout:
@@ -100,7 +112,7 @@ def write_columnar(root: h5py.Group, entries: Callable[[], Iterable[Entry]]) -> 
         total = layout.samples[name]
         group = channels_group.create_group(name)
         samples[name] = group.create_dataset(L.SAMPLES_DATASET, shape=(total,), dtype=np.float64,
-                                             chunks=_chunks(total), maxshape=(None,))
+                                             chunks=chunks_for(total), maxshape=(None,))
         samples[name].attrs[L.ATTR_UNITS] = layout.channels[name]
     pending: dict[str, list[np.ndarray]] = {name: [] for name in layout.channels}
     written = dict.fromkeys(layout.channels, 0)
@@ -138,33 +150,33 @@ def write_columnar(root: h5py.Group, entries: Callable[[], Iterable[Entry]]) -> 
     if np.any(np.diff(index) <= 0):
         raise ParameterError("entries", "point indices not strictly ascending", "points in index order")
 
-    _column(points, L.INDEX_DATASET, index, None)
+    column(points, L.INDEX_DATASET, index, None)
     for kind in ("settings", "readings"):
         group = points.create_group(kind)
         for name in sorted(scalars[kind]):
-            _column(group, name, scalars[kind][name], layout.scalars[kind][name])
+            column(group, name, scalars[kind][name], layout.scalars[kind][name])
     calibration_group = points.create_group(L.CALIBRATION_GROUP)
     for rec in sorted(layout.records):
         calibration_group.create_group(rec)
     for rec, name in sorted(calibration):
-        _column(calibration_group[rec], name, calibration[(rec, name)], layout.calibration[(rec, name)])
+        column(calibration_group[rec], name, calibration[(rec, name)], layout.calibration[(rec, name)])
     if layout.has_counters:
         counters_group = points.create_group(L.COUNTERS_GROUP)
-        _column(counters_group, L.GATE_TIME_DATASET, gate, "s")
+        column(counters_group, L.GATE_TIME_DATASET, gate, "s")
         counts_group, marks_group = counters_group.create_group(L.COUNTS_GROUP), counters_group.create_group(L.MARKS_GROUP)
         for name in sorted(counts):
-            _column(counts_group, name, counts[name], L.COUNT_UNIT)
-            _column(marks_group, name, marks[name], L.MARKS_UNIT)
+            column(counts_group, name, counts[name], L.COUNT_UNIT)
+            column(marks_group, name, marks[name], L.MARKS_UNIT)
     for name in sorted(layout.channels):
         group = channels_group[name]
-        _column(group, L.FIRST_SAMPLE_DATASET, first[name], None)
-        _column(group, L.SAMPLE_COUNT_DATASET, length[name], None)
-        _column(group, L.ATTR_SAMPLE_RATE, rate[name], "Hz")
-        _column(group, L.ATTR_START_TIME, start[name], "s")
+        column(group, L.FIRST_SAMPLE_DATASET, first[name], None)
+        column(group, L.SAMPLE_COUNT_DATASET, length[name], None)
+        column(group, L.ATTR_SAMPLE_RATE, rate[name], "Hz")
+        column(group, L.ATTR_START_TIME, start[name], "s")
     truth = root.create_group(L.TRUTH_GROUP)
-    _column(truth, L.INDEX_DATASET, index, None)
+    column(truth, L.INDEX_DATASET, index, None)
     for name in sorted(scalars["truth"]):
-        _column(truth, name, scalars["truth"][name], layout.scalars["truth"][name])
+        column(truth, name, scalars["truth"][name], layout.scalars["truth"][name])
 
 
 # ----------------------------------------------------------------------------- reading

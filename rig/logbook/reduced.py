@@ -12,6 +12,7 @@ import pandas as pd
 from rig.errors import LogFormatError, ParameterError
 from rig.logbook import atomic, h5format
 from rig.logbook import layout as L
+from rig.logbook.columnar import COLUMN_FILTERS, chunks_for
 from rig.logbook.opening import as_path, open_log
 from rig.logbook.units import DIMENSIONLESS, UNIT_RULE, column_name, is_unit, safe_unit
 
@@ -79,11 +80,12 @@ def write_reduced(path: object, table: pd.DataFrame, units: Mapping[str, str] | 
 def _write_table(group: h5py.Group, table: pd.DataFrame, units: Mapping[str, str]) -> None:
     group.attrs[L.ATTR_COLUMNS] = list(table.columns)
     group.attrs[L.ATTR_INDEX_NAME] = "" if table.index.name is None else str(table.index.name)
-    group.create_dataset(L.REDUCED_INDEX_DATASET, data=table.index.to_numpy(dtype=np.int64))
+    compact = {"chunks": chunks_for(len(table)), **COLUMN_FILTERS}
+    group.create_dataset(L.REDUCED_INDEX_DATASET, data=table.index.to_numpy(dtype=np.int64), **compact)
     for column in table.columns:
         values = table[column]
         if values.dtype.kind in "iuf":
-            ds = group.create_dataset(column, data=values.to_numpy())
+            ds = group.create_dataset(column, data=values.to_numpy(), **compact)
         else:
             ds = group.create_dataset(column, data=values.astype(str).tolist(), dtype=h5py.string_dtype())
         ds.attrs[L.ATTR_UNITS] = units[column]
