@@ -211,7 +211,7 @@ class ColumnarLog:
         values = self._rows(group, name, "iuf").astype(np.float64, copy=False)
         bad = np.flatnonzero(np.isinf(values))
         if bad.size:
-            raise h5format.fail(group[name], f"point {int(self.index[bad[0]])}: value {values[bad[0]]!r} is not finite")
+            raise h5format.fail(group[name], f"point {int(self.index[bad[0]])}: value {h5format.shown(values[bad[0]])} is not finite")
         return values, h5format.units_of(group[name])
 
     def quantities(self, kind: str, root: str = L.POINTS_GROUP) -> dict[str, tuple[np.ndarray, str]]:
@@ -344,7 +344,7 @@ class ColumnarLog:
             bad = np.flatnonzero(~np.isfinite(values))
             if bad.size:
                 raise h5format.fail(ds, f"point {index}: sample {int(bad[0])} (of {int(length[row])}) = "
-                                        f"{values[bad[0]]!r} is not finite")
+                                        f"{h5format.shown(values[bad[0]])} is not finite")
             point_channels[name] = h5format.decoded(ds, lambda: Channel(values, unit, rate[row], start[row]))
         return PointRecord(index, present(scalars["settings"]), point_channels, reading,
                            present(scalars["readings"]), records)
