@@ -73,6 +73,33 @@ def write_run(path: Path, indices=range(N_POINTS), *, seed: int = 7, finalize: b
     return writer
 
 
+def _v1_quantities(group: h5py.Group, values) -> None:
+    for name, q in values.items():
+        group.create_dataset(name, data=np.float64(q.value)).attrs["units"] = q.unit
+
+
+def _v1_point(points: h5py.Group, p: PointRecord) -> None:
+    """One point in the layout of format version 1 (docs/log-format.md), as earlier versions wrote it."""
+    group = points.create_group(f"point_{p.index:06d}")
+    group.attrs["index"] = np.int64(p.index)
+    _v1_quantities(group.create_group("settings"), p.settings)
+    _v1_quantities(group.create_group("readings"), p.readings)
+    channels = group.create_group("channels")
+    for name, channel in p.channels.items():
+        ds = channels.create_dataset(name, data=channel.samples)
+        ds.attrs.update(units=channel.unit, sample_rate_Hz=np.float64(channel.sample_rate_Hz),
+                        start_time_s=np.float64(channel.start_time_s))
+    if p.counters is not None:
+        counters = group.create_group("counters")
+        counters.attrs["gate_time_s"] = np.float64(p.counters.gate_time_s)
+        for name, counter in p.counters.counters.items():
+            ds = counters.create_dataset(name, data=np.int64(counter.count))
+            ds.attrs.update(units="count", marks_per_rev=np.int64(counter.marks_per_rev))
+    calibration = group.create_group("calibration")
+    for name, record in p.calibration.items():
+        _v1_quantities(calibration.create_group(name), record)
+
+
 def write_v1_run(path: Path) -> None:
     """The same run in the layout of format version 1 (one group per point), as earlier versions
     wrote it: the readers of version-1 logs are tested on it."""
@@ -83,10 +110,10 @@ def write_v1_run(path: Path) -> None:
         f.attrs["format_version"] = np.int64(1)
         points, truths = f.create_group("points"), f.create_group("truth")
         for k in range(N_POINTS):
-            h5format.write_point(points, point(k))
+            _v1_point(points, point(k))
             group = truths.create_group(f"point_{k:06d}")
             group.attrs["index"] = np.int64(k)
-            h5format.write_quantities(group, truth(k))
+            _v1_quantities(group, truth(k))
 
 
 def journal_frames(path: Path) -> list[int]:

@@ -5,7 +5,6 @@ from __future__ import annotations
 import math
 import tempfile
 from pathlib import Path
-from unittest import mock
 
 import h5py
 import logbook_samples as samples
