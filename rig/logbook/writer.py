@@ -108,6 +108,8 @@ class LogWriter:
                                  hint=f"done: {sorted(self.done)}")
         frame = journal.encode(journal.entry_of(point, truth))
         with open(self.parts / JOURNAL, "ab") as handle:
+            if handle.tell() != self._end:  # the torn frame of a write that failed half-way
+                handle.truncate(self._end)
             handle.write(frame)
             if time.monotonic() - self._synced >= FSYNC_INTERVAL_S:
                 self._sync(handle)

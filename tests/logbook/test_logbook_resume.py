@@ -112,6 +112,14 @@ def test_point_write_failing_half_way_leaves_previous_parts(monkeypatch: pytest.
         writer.write_point(samples.point(2), samples.truth(2))
     assert {p.name: p.read_bytes() for p in staging_dir(path).iterdir()} == before
     assert writer.done == {0, 1} and LogWriter(path, samples.metadata()).done == {0, 1}
+    monkeypatch.undo()
+    journal = staging_dir(path) / "points.journal"
+    with journal.open("ab") as handle:  # a frame torn by a write that failed half-way (disk full)
+        handle.write(b"RIGP torn")
+    for k in range(2, samples.N_POINTS):  # the same writer goes on: the torn bytes are cut off
+        writer.write_point(samples.point(k), samples.truth(k))
+    writer.finalize()
+    assert samples.dump(path) == samples.dump(samples.write_run(tmp_path / "ref.h5").path)
 
 
 def test_finalize_failing_half_way_leaves_previous_log(
