@@ -15,8 +15,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from rig.runner import run_scene
 from rig.cli.reduce import DAMAGED_STATUS
+from rig.runner import run_scene
 from rig.scenes import load_scene
 
 DEFAULT_SCENE = "default"

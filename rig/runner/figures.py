@@ -1,8 +1,10 @@
 """The generic figure of a stand run: reduced quantities with error bars next to the truth.
 
 One panel per reduced quantity (l/a, c/a, mu_v, mu_T - those the table has); x is the innermost
-swept setting, labelled with its name and unit (setting_label) (the point index when nothing is swept); one series per combination of the outer
-swept settings and of the settings that tell the procedure's series apart. Points: reduced value +- its standard uncertainty u_<name>; line: true_<name>.
+swept setting, labelled with its name and unit (setting_label; the point index when nothing is
+swept); one series per combination of the outer swept settings and of the settings that tell
+the procedure's series apart. Points: reduced value +- its standard uncertainty u_<name>; line:
+true_<name>.
 The paper-like campaign figures are drawn elsewhere.
 """
 

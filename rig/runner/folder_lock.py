@@ -6,8 +6,9 @@ belongs to the open file, so it goes away with the process that holds it - a kil
 leaves a stale lock, and the next run simply takes it and resumes. The file holds the pid and
 start time of its holder, which the error of a second run quotes; the holder removes it when
 it is done (a killed holder leaves the file, unlocked and harmless). A taker checks that the
-file it locked is still the one at the path, so removing it never lets two runs in. A second ``rig run`` (or ``rig reduce``) on a locked folder does
-not wait: it raises :class:`FolderLockedError` at once.
+file it locked is still the one at the path, so removing it never lets two runs in. A second
+``rig run`` (or ``rig reduce``) on a locked folder does not wait: it raises
+:class:`FolderLockedError` at once.
 """
 
 from __future__ import annotations

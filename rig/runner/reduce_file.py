@@ -2,8 +2,8 @@
 
 The log holds its scene's text verbatim; it is validated with the current stand code, the stand
 is built from it (nothing simulated) and reduces the log, with the folder's lock held (a log
-that a run is still writing is refused by name, rig.runner.folder_lock): reduced.csv (and the figure, when the
-scene asks for figures) go into the output folder, ``/reduced`` into the log.
+that a run is still writing is refused by name, rig.runner.folder_lock): reduced.csv (and the
+figure, when the scene asks for figures) go into the output folder, ``/reduced`` into the log.
 """
 
 from __future__ import annotations

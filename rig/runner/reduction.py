@@ -92,8 +92,7 @@ def reduce_to_files(stand: Stand, log_path: Path, contact: ContactSpec, out_dir:
     table = stand.reduce_log(log_path, contact)
     if not isinstance(table, pd.DataFrame):
         raise RigError(f"stand {stand.name!r}: reduce_log returned {type(table).__name__}, not a DataFrame")
-    if not any(str(c).startswith("true_") for c in table.columns):
-        table = attach_truth(table, read_truth_if_any(log_path))
+    table = attach_truth(table, read_truth_if_any(log_path))
     damaged = damaged_points(table)
     csv = out_dir / REDUCED_CSV
     table.to_csv(csv, index=True, index_label=table.index.name or "point")

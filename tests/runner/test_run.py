@@ -105,3 +105,11 @@ def test_progress_bar_only_on_a_terminal_unless_asked(tmp_path, capsys):
     assert capsys.readouterr().err == ""
     run(tmp_path / "loud", NO_FIGURES, progress=True)
     assert "4/4" in capsys.readouterr().err
+
+
+def test_figure_axis_is_labelled_with_the_setting_name_and_unit():
+    from rig.runner.figures import setting_label
+
+    assert setting_label("brake_setpoint_N_m") == "brake set-point $T_{set}$ [N m]"
+    assert setting_label("omega_1_set_rad_s") == r"speed set-point $\omega_1$ [rad/s]"
+    assert setting_label("load_N") == "load [N]" and setting_label("speed_step") == "drive speed step [1]"
