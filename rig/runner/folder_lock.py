@@ -55,7 +55,12 @@ def folder_lock(folder: Path, what: str) -> Iterator[Path]:
     path = folder / LOCK_NAME
     while True:
         fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
-        if not _try_lock(fd):
+        try:
+            locked = _try_lock(fd)
+        except OSError as error:  # e.g. a file system without locks
+            os.close(fd)
+            raise RigError(f"{folder}: cannot lock {LOCK_NAME} ({error}); use a folder on a local file system") from None
+        if not locked:
             holder = os.pread(fd, 4096, 0).decode("utf-8", "replace").strip() or "another process"
             os.close(fd)
             raise FolderLockedError(f"{folder} is in use by {holder}; wait for it to finish or stop it, "
