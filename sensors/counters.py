@@ -10,11 +10,17 @@ notes 2). With the amplitude-noise effect off every pulse is counted (the nomina
 amplitude must reach the threshold, checked on construction); with it on, a pulse whose noisy
 amplitude falls below the threshold is missed. Noise never creates extra pulses.
 
-Event-driven simulation (simpy): one process per channel emits its pulses at the mark-crossing
-instants of the true trajectory (:mod:`sensors.strobe`); the gate process switches every counter
-at the opening and closing instants. The gate is the half-open interval [open, open + T): the
-gate edges are scheduled with simpy's URGENT priority, so at a tie they act before a pulse.
-Pulses outside [open, open + T] cannot change a count and are not emitted.
+Counting without one event per pulse: the counting pulses of a channel are the mark-crossing
+instants of the true trajectory (:mod:`sensors.strobe`) whose amplified amplitude reaches the
+threshold; the timer opens every counter at the same instant and closes them together, so a
+count is the number of firing pulses in the half-open gate [open, open + T) - a pulse exactly at
+the opening counts, one exactly at the closing does not (the order an event-driven simulation
+gives when the gate edges act before a pulse at a tie). That number is found with two binary
+searches in the sorted crossing times, for any motion of the wheel (accelerating, stalling,
+reversing: the crossings come from the sampled trajectory itself). The amplitudes are drawn for
+the same pulses, in the same order, as the event-driven model of earlier versions drew them (the
+pulses in [open, open + T]), so counts with the amplitude-noise effect on are unchanged too
+(tests/sensors/test_sensors_counters.py holds them against an event-driven reference).
 
 Counting quantisation (model, docs/instruments.md): with the marks' phase at the gate opening
 random, N - f T = U_close - U_open with U uniform in [0, 1) at each edge, i.e. triangular on
@@ -28,8 +34,6 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 
 import numpy as np
-import simpy
-from simpy.events import URGENT
 
 from sensors import validate
 from sensors.errors import InstrumentParameterError
@@ -126,44 +130,6 @@ class CountReading:
         return 2.0 * np.pi * self.counts[channel] / (self.marks[channel] * self.gate_time_s)
 
 
-class _Counter:
-    """Electronic counter (18/19): a register that adds pulses while its gate is open."""
-
-    __slots__ = ("is_open", "count")
-
-    def __init__(self) -> None:
-        self.is_open = False
-        self.count = 0
-
-
-class _GateEdge(simpy.events.Event):
-    """A timeout that fires before ordinary events due at the same instant (priority URGENT)."""
-
-    def __init__(self, env: simpy.Environment, delay: float) -> None:
-        super().__init__(env)
-        self._ok = True
-        self._value = None
-        env.schedule(self, URGENT, max(delay, 0.0))
-
-
-def _gate(env: simpy.Environment, counters: list[_Counter], open_s: float, duration_s: float):
-    """Timer 22: open every counter at ``open_s`` [s], close all of them ``duration_s`` [s] later."""
-    yield _GateEdge(env, open_s - env.now)
-    for c in counters:
-        c.is_open = True
-    yield _GateEdge(env, open_s + duration_s - env.now)
-    for c in counters:
-        c.is_open = False
-
-
-def _pulses(env: simpy.Environment, times: list[float], fires: list[bool], counter: _Counter):
-    """Photocell + amplifier: emit the counting pulses of one channel at their instants [s]."""
-    for t, fire in zip(times, fires):
-        yield env.timeout(max(t - env.now, 0.0))
-        if fire and counter.is_open:
-            counter.count += 1
-
-
 @dataclass(frozen=True, eq=False)
 class SpeedCounters:
     """The counting system: named channels sharing one gate timer."""
@@ -197,9 +163,7 @@ class SpeedCounters:
         t_open = validate.number("gate_open_s", gate_open_s)
         duration = validate.number("gate_time_s", gate_time_s, 0.0, lo_open=True)
         t_close = t_open + duration
-        env = simpy.Environment(initial_time=t_open)
-        counters = {name: _Counter() for name in self.channels}
-        env.process(_gate(env, list(counters.values()), t_open, duration))
+        counts = {}
         for name, channel in self.channels.items():
             t, theta = validate.time_series(
                 f"trajectories[{name!r}].t_s", trajectories[name][0],
@@ -211,12 +175,12 @@ class SpeedCounters:
                     f"inside the samples of channel {name!r}, [{t[0]!r}, {t[-1]!r}] s",
                 )
             times = channel.disc.crossing_times(t, theta)
-            window = times[np.searchsorted(times, t_open, "left") : np.searchsorted(times, t_close, "right")]
-            fires = channel.amplifier.fires(channel.photocell.amplitudes_V(window.size))
-            env.process(_pulses(env, window.tolist(), fires.tolist(), counters[name]))
-        env.run()
+            first, last = np.searchsorted(times, t_open, "left"), np.searchsorted(times, t_close, "right")
+            fires = channel.amplifier.fires(channel.photocell.amplitudes_V(last - first))
+            inside = np.searchsorted(times[first:last], t_close, "left")  # the gate closes before a pulse at t_close
+            counts[name] = int(np.count_nonzero(fires[:inside]))
         return CountReading(
-            counts=MappingProxyType({n: int(c.count) for n, c in counters.items()}),
+            counts=MappingProxyType(counts),
             marks=MappingProxyType({n: ch.disc.marks for n, ch in self.channels.items()}),
             gate_open_s=t_open,
             gate_time_s=duration,

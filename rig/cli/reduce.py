@@ -3,6 +3,9 @@
 Writes reduced.csv (and the reduced-vs-truth figure) into DIR (default: the log's folder) and
 the table into the log's ``/reduced`` group, and prints the reduced values. In a folder it cannot
 write (and without -o), it still prints the values, then a named error suggesting -o (exit 2).
+Exit status: 0 every point reduced (or NaN with a reason of the method), 3 some points were
+damaged in the log (NaN, reason names the dataset and the bad value; the others reduced as
+usual), 2 bad input or another error (printed by rig.cli.main).
 """
 
 from __future__ import annotations
@@ -14,6 +17,9 @@ import pandas as pd
 
 from rig.errors import ParameterError
 from rig.runner import reduce_log_file
+
+DAMAGED_STATUS = 3
+"""Exit status of ``rig run`` and ``rig reduce`` when some points of the log were damaged."""
 
 
 def add_parser(subparsers) -> None:
@@ -50,6 +56,6 @@ def main(args) -> int:
                              "with -o DIR") from None
     print(values_text(reduction.table))
     print(f"reduced {len(reduction.table)} points of {args.log}: wrote {', '.join(str(f) for f in files)}")
-    if reduction.problem:
-        print(f"note: {reduction.problem}")
-    return 0
+    for problem in reduction.problems:
+        print(f"note: {problem}")
+    return DAMAGED_STATUS if reduction.damaged else 0

@@ -7,13 +7,15 @@ interrupted run. ``--jobs N`` runs a stand scene's points on N local processes, 
 ADDRESS`` on the workers of a Dask scheduler (optional extra ``dask``); the two exclude each
 other (``--jobs`` must stay 1 with a scheduler: the cluster sets the parallelism), and results
 are the same either way. Exit status: 0 every point done, 1 some points did not settle (listed in
-summary.txt), 2 bad input or another error (printed by rig.cli.main).
+summary.txt), 2 bad input or another error (printed by rig.cli.main; among them a folder another
+run holds), 3 some points of the log were damaged (reduced to NaN, named in summary.txt).
 """
 
 from __future__ import annotations
 
 from pathlib import Path
 
+from rig.cli.reduce import DAMAGED_STATUS
 from rig.runner import run_scene
 from rig.scenes import load_scene
 
@@ -45,4 +47,4 @@ def main(args) -> int:
     report = run_scene(scene, out_dir, jobs=args.jobs, scheduler=args.scheduler)
     print(report.summary, end="")
     print(f"wrote {', '.join(report.files)} in {report.out_dir}")
-    return 1 if report.failures else 0
+    return 1 if report.failures else DAMAGED_STATUS if report.damaged else 0

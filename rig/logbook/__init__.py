@@ -1,8 +1,11 @@
 """Self-describing HDF5 measurement logs, one file per run (layout: ``docs/log-format.md``).
 
-Write with :class:`LogWriter` (one crash-safe part per finished point, resumable, assembled
-atomically by :meth:`LogWriter.finalize`); read with the ``read_*`` functions, which return
-pandas DataFrames whose column names carry units (``F_y_N``, ``T2_N_m``, ``omega_rad_s``).
+Write with :class:`LogWriter` (one checksummed journal frame per finished point, resumable,
+laid out as the columnar log - one row per point per quantity - atomically by
+:meth:`LogWriter.finalize`); read with the ``read_*`` functions, each group of all points as a
+pandas DataFrame in one call, column names carrying units (``F_y_N``, ``T2_N_m``,
+``omega_rad_s``), or every point as a PointRecord with :func:`read_points`. Logs of format
+version 1 (one HDF5 group per point) are read by the same functions.
 The simulation's truth is read only through :mod:`rig.logbook.truth` (not exported here).
 The logbook is generic: it stores what it is given and knows no stand or sensor.
 """
@@ -28,6 +31,7 @@ from rig.logbook.reader import (
     read_counters,
     read_metadata,
     read_point,
+    read_points,
     read_readings,
     read_settings,
 )
@@ -57,6 +61,7 @@ __all__ = [
     "read_counters",
     "read_metadata",
     "read_point",
+    "read_points",
     "read_readings",
     "read_reduced",
     "read_settings",

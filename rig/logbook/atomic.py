@@ -17,6 +17,10 @@ from pathlib import Path
 import h5py
 
 TMP_SUFFIX = ".h5.tmp"
+LIBVER = ("v110", "v110")
+"""HDF5 file-format features of the files written: those of HDF5 1.10 (2016; every h5py since 2.8
+reads them), whose compact chunk indexes keep a dataset's fixed cost small (a log holds about
+130 datasets)."""
 
 
 def fsync_file(path: Path) -> None:
@@ -81,5 +85,5 @@ def new_hdf5(target: Path, tmp_folder: Path | None = None) -> Iterator[h5py.File
     """
     folder = target.parent if tmp_folder is None else tmp_folder
     with replace_atomically(target, temporary_path(folder, target.name)) as tmp:
-        with h5py.File(tmp, "w") as handle:
+        with h5py.File(tmp, "w", libver=LIBVER) as handle:
             yield handle

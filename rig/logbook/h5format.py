@@ -1,4 +1,7 @@
-"""Encode the content model (:mod:`rig.logbook.content`) into HDF5 groups and decode it back.
+"""Decode the one-group-per-point layout of format version 1 (and encode the run metadata).
+
+Version-1 logs are no longer written (the writer lays out the columnar version 2,
+rig.logbook.columnar); their encoder survives only in the tests (tests/logbook/logbook_samples.py).
 
 Decoding checks every object it touches and raises :class:`LogFormatError` naming the file, the
 object's path inside it (which names the point) and what is wrong.
@@ -6,7 +9,7 @@ object's path inside it (which names the point) and what is wrong.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable
 from typing import TypeVar
 
 import h5py
@@ -121,13 +124,6 @@ def read_metadata(handle: h5py.File) -> RunMetadata:
 
 # ----------------------------------------------------------------------------- scalars
 
-def write_quantities(group: h5py.Group, values: Mapping[str, Quantity]) -> None:
-    """One scalar float64 dataset per quantity, with its ``units`` attribute."""
-    for name, q in values.items():
-        ds = group.create_dataset(name, data=np.float64(q.value))
-        ds.attrs[L.ATTR_UNITS] = q.unit
-
-
 def read_quantities(group: h5py.Group) -> dict[str, Quantity]:
     out = {}
     for name, ds in group.items():
@@ -138,14 +134,6 @@ def read_quantities(group: h5py.Group) -> dict[str, Quantity]:
 
 
 # ----------------------------------------------------------------------------- channels
-
-def write_channel(group: h5py.Group, name: str, channel: Channel) -> None:
-    """A 1-D float64 dataset with ``units``, ``sample_rate_Hz`` and ``start_time_s``."""
-    ds = group.create_dataset(name, data=channel.samples)
-    ds.attrs[L.ATTR_UNITS] = channel.unit
-    ds.attrs[L.ATTR_SAMPLE_RATE] = np.float64(channel.sample_rate_Hz)
-    ds.attrs[L.ATTR_START_TIME] = np.float64(channel.start_time_s)
-
 
 def read_channel(group: h5py.Group, name: str) -> Channel:
     ds = group.get(name)
@@ -163,15 +151,6 @@ def read_channel(group: h5py.Group, name: str) -> Channel:
 
 # ----------------------------------------------------------------------------- counters
 
-def write_counters(point_group: h5py.Group, counters: CounterReadings) -> None:
-    group = point_group.create_group(L.COUNTERS_GROUP)
-    group.attrs[L.ATTR_GATE_TIME] = np.float64(counters.gate_time_s)
-    for name, counter in counters.counters.items():
-        ds = group.create_dataset(name, data=np.int64(counter.count))
-        ds.attrs[L.ATTR_UNITS] = L.COUNT_UNIT
-        ds.attrs[L.ATTR_MARKS] = np.int64(counter.marks_per_rev)
-
-
 def read_counters(point_group: h5py.Group) -> CounterReadings | None:
     if L.COUNTERS_GROUP not in point_group:
         return None
@@ -188,23 +167,6 @@ def read_counters(point_group: h5py.Group) -> CounterReadings | None:
 
 
 # ----------------------------------------------------------------------------- points
-
-def write_point(points: h5py.Group, point: PointRecord) -> h5py.Group:
-    """Group ``points/point_NNNNNN`` holding everything in ``point``."""
-    group = points.create_group(L.point_group_name(point.index))
-    group.attrs[L.ATTR_INDEX] = np.int64(point.index)
-    write_quantities(group.create_group(L.SETTINGS_GROUP), point.settings)
-    write_quantities(group.create_group(L.READINGS_GROUP), point.readings)
-    channels = group.create_group(L.CHANNELS_GROUP)
-    for name, channel in point.channels.items():
-        write_channel(channels, name, channel)
-    if point.counters is not None:
-        write_counters(group, point.counters)
-    calibration = group.create_group(L.CALIBRATION_GROUP)
-    for name, record in point.calibration.items():
-        write_quantities(calibration.create_group(name), record)
-    return group
-
 
 def point_index(group: h5py.Group) -> int:
     """The ``index`` attribute of a point group, checked against the group's name."""

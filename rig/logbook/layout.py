@@ -1,4 +1,4 @@
-"""Names of the groups, datasets and attributes of a friction-rig log (format version 1).
+"""Names of the groups, datasets and attributes of a friction-rig log (format versions 1 and 2).
 
 The layout is documented in ``docs/log-format.md``; this module is the single place the code
 spells it, so that writer, readers and the documentation test agree.
@@ -10,8 +10,12 @@ import re
 
 FORMAT_NAME = "friction-rig-log"
 """Value of the root attribute ``format`` that marks a file as one of ours."""
-FORMAT_VERSION = 1
-"""Value of the root attribute ``format_version`` written by this package (the only one read)."""
+FORMAT_VERSION = 2
+"""Value of the root attribute ``format_version`` written by this package (2: columnar)."""
+COLUMNAR_VERSION = 2
+"""First version with one row per point in per-quantity datasets (docs/log-format.md)."""
+READABLE_VERSIONS = (1, 2)
+"""Versions the readers accept: 1 (one group per point) and 2 (columnar)."""
 
 # Root attributes.
 ATTR_FORMAT = "format"
@@ -47,6 +51,19 @@ COUNT_UNIT = "count"
 """``units`` of every counter total."""
 MARKS_UNIT = "1/rev"
 """Unit of the marks per revolution of a stroboscope disc (column ``<name>_marks_per_rev``)."""
+
+# Columnar layout (version 2): /points/<kind>/... datasets of one row per point.
+INDEX_DATASET = "index"
+"""``/points/index`` (int64, one row per point): the point index of each row, ascending."""
+GATE_TIME_DATASET = "gate_time"
+COUNTS_GROUP = "counts"
+MARKS_GROUP = "marks"
+SAMPLES_DATASET = "samples"
+"""``/points/channels/<name>/samples``: every point's samples, one after the other (ragged)."""
+FIRST_SAMPLE_DATASET = "first"
+SAMPLE_COUNT_DATASET = "length"
+ABSENT_INTEGER = -1
+"""Value of an int64 row (count, marks) for a point that has no such counter."""
 
 # Inside /reduced.
 ATTR_COLUMNS = "columns"

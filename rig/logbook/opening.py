@@ -8,6 +8,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import h5py
+import numpy as np
 
 from rig.errors import LogFormatError, ParameterError
 from rig.logbook import layout as L
@@ -22,7 +23,7 @@ def as_path(name: str, path: object) -> Path:
 
 
 def check_format(handle: h5py.File, *, what: str = "friction-rig log") -> None:
-    """Raise LogFormatError unless the root says ``format = friction-rig-log``, version 1."""
+    """Raise LogFormatError unless the root says ``format = friction-rig-log``, a readable version."""
     where = handle.filename
     if L.ATTR_FORMAT not in handle.attrs:
         raise LogFormatError(
@@ -33,10 +34,21 @@ def check_format(handle: h5py.File, *, what: str = "friction-rig log") -> None:
     if name != L.FORMAT_NAME:
         raise LogFormatError(f"{where}: not a {what}: root attribute 'format' = {shown(name)}, expected {L.FORMAT_NAME!r}")
     version = handle.attrs.get(L.ATTR_FORMAT_VERSION)
-    if version != L.FORMAT_VERSION:
+    if not isinstance(version, np.integer | int) or int(version) not in L.READABLE_VERSIONS:
+        readable = " and ".join(map(str, L.READABLE_VERSIONS))
         raise LogFormatError(
-            f"{where}: root attribute 'format_version' = {shown(version)}; this friction-rig reads version {L.FORMAT_VERSION}"
+            f"{where}: root attribute 'format_version' = {shown(version)}; this friction-rig reads versions {readable}"
         )
+
+
+def format_version(handle: h5py.File) -> int:
+    """The (checked) format version of an open log."""
+    return int(handle.attrs[L.ATTR_FORMAT_VERSION])
+
+
+def is_columnar(handle: h5py.File) -> bool:
+    """True for a columnar log (version 2), False for one group per point (version 1)."""
+    return format_version(handle) >= L.COLUMNAR_VERSION
 
 
 @contextlib.contextmanager

@@ -12,6 +12,7 @@ import pandas as pd
 from rig.errors import LogFormatError, ParameterError
 from rig.logbook import atomic, h5format
 from rig.logbook import layout as L
+from rig.logbook.columnar import COLUMN_FILTERS, chunks_for
 from rig.logbook.opening import as_path, open_log
 from rig.logbook.units import DIMENSIONLESS, UNIT_RULE, column_name, is_unit, safe_unit
 
@@ -52,7 +53,9 @@ def write_reduced(path: object, table: pd.DataFrame, units: Mapping[str, str] | 
 
     ``units``: {column: unit} (default ``table.attrs["units"]``); every column must be numeric and
     named ``<name>_<safe unit>``; the (integer) index is stored too. NaN marks a value that could
-    not be reduced. The log is copied, changed and renamed over the original.
+    not be reduced. Every other object of the log is copied into a new file, which gets the
+    table and is renamed over the original: the result depends only on the log's content and the
+    table, not on whether the log was reduced before.
     """
     log = as_path("path", path)
     if not isinstance(table, pd.DataFrame):
@@ -64,23 +67,25 @@ def write_reduced(path: object, table: pd.DataFrame, units: Mapping[str, str] | 
     column_units = _column_units(table, units)
     with open_log(log):
         pass
-    with atomic.replace_atomically(log, atomic.temporary_path(log.parent, log.name)) as tmp:
-        shutil.copyfile(log, tmp)
-        shutil.copymode(log, tmp)
-        with h5py.File(tmp, "r+") as handle:
-            if L.REDUCED_GROUP in handle:
-                del handle[L.REDUCED_GROUP]
-            _write_table(handle.create_group(L.REDUCED_GROUP), table, column_units)
+    with atomic.new_hdf5(log) as new, h5py.File(log, "r") as old:
+        for name, value in old.attrs.items():
+            new.attrs[name] = value
+        for name in old:
+            if name != L.REDUCED_GROUP:
+                old.copy(old[name], new, name=name)
+        _write_table(new.create_group(L.REDUCED_GROUP), table, column_units)
+        shutil.copymode(log, new.filename)
 
 
 def _write_table(group: h5py.Group, table: pd.DataFrame, units: Mapping[str, str]) -> None:
     group.attrs[L.ATTR_COLUMNS] = list(table.columns)
     group.attrs[L.ATTR_INDEX_NAME] = "" if table.index.name is None else str(table.index.name)
-    group.create_dataset(L.REDUCED_INDEX_DATASET, data=table.index.to_numpy(dtype=np.int64))
+    compact = {"chunks": chunks_for(len(table)), **COLUMN_FILTERS}
+    group.create_dataset(L.REDUCED_INDEX_DATASET, data=table.index.to_numpy(dtype=np.int64), **compact)
     for column in table.columns:
         values = table[column]
         if values.dtype.kind in "iuf":
-            ds = group.create_dataset(column, data=values.to_numpy())
+            ds = group.create_dataset(column, data=values.to_numpy(), **compact)
         else:
             ds = group.create_dataset(column, data=values.astype(str).tolist(), dtype=h5py.string_dtype())
         ds.attrs[L.ATTR_UNITS] = units[column]

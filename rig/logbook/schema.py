@@ -8,9 +8,7 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from rig.errors import LogFormatError, ParameterError
-from rig.logbook import h5format
-from rig.logbook import layout as L
-from rig.logbook.opening import open_log
+from rig.logbook.reader import read_metadata, read_points
 from rig.logbook.units import check_name, check_unit
 
 
@@ -37,14 +35,13 @@ class LogSchema:
         object.__setattr__(self, "counters", tuple(check_name("counter", c) for c in self.counters))
 
 
-def _check_kind(where: str, group, kind: str, required: Mapping[str, str]) -> None:
-    """Every required name of ``kind`` is present in ``group`` with its units."""
+def _check_kind(where: str, present: Mapping[str, object], kind: str, required: Mapping[str, str]) -> None:
+    """Every required name of ``kind`` is present (a Quantity or Channel by name) with its units."""
     singular = kind[:-1]
     for name, unit in required.items():
-        if name not in group:
-            present = ", ".join(group.keys()) or "none"
-            raise LogFormatError(f"{where}: {singular} {name!r} is missing (present: {present})")
-        found = h5format.units_of(group[name])
+        if name not in present:
+            raise LogFormatError(f"{where}: {singular} {name!r} is missing (present: {', '.join(present) or 'none'})")
+        found = present[name].unit
         if found != unit:
             raise LogFormatError(f"{where}: {singular} {name!r} has units {found!r}, expected {unit!r}")
 
@@ -56,20 +53,20 @@ def check_log(path: object, schema: LogSchema | None = None) -> list[int]:
     """
     if schema is not None and not isinstance(schema, LogSchema):
         raise ParameterError("schema", schema, "a LogSchema or None")
-    with open_log(path) as handle:
-        h5format.read_metadata(handle)
-        indices = []
-        for index, group in h5format.point_groups(handle):
-            point = h5format.read_point(group)
-            indices.append(index)
-            if schema is None:
-                continue
-            where = f"{path}: point {index}"
-            _check_kind(where, group[L.CHANNELS_GROUP], "channels", schema.channels)
-            _check_kind(where, group[L.SETTINGS_GROUP], "settings", schema.settings)
-            _check_kind(where, group[L.READINGS_GROUP], "readings", schema.readings)
-            present = {} if point.counters is None else point.counters.counters
-            for name in schema.counters:
-                if name not in present:
-                    raise LogFormatError(f"{where}: counter {name!r} is missing (present: {', '.join(present) or 'none'})")
-        return indices
+    read_metadata(path)
+    indices = []
+    for index, point in read_points(path):
+        if isinstance(point, LogFormatError):
+            raise point
+        indices.append(index)
+        if schema is None:
+            continue
+        where = f"{path}: point {index}"
+        _check_kind(where, point.channels, "channels", schema.channels)
+        _check_kind(where, point.settings, "settings", schema.settings)
+        _check_kind(where, point.readings, "readings", schema.readings)
+        present = {} if point.counters is None else point.counters.counters
+        for name in schema.counters:
+            if name not in present:
+                raise LogFormatError(f"{where}: counter {name!r} is missing (present: {', '.join(present) or 'none'})")
+    return indices

@@ -51,3 +51,20 @@ class TableBuilder:
         )
         table.attrs["units"] = {c: self.units[c] for c in columns}
         return table
+
+
+def frame_of(where: str, index: pd.Index, columns: list[tuple[str, str, object, str]]) -> pd.DataFrame:
+    """A per-point table from whole columns: ``(source, name, values, unit)`` each, one value per
+    row of ``index``; ``source`` names the column in errors. Columns sorted by name, units in
+    ``attrs["units"]``; two columns that get the same name are a LogFormatError, as in TableBuilder."""
+    data, units, sources = {}, {}, {}
+    for source, name, values, unit in columns:
+        column = column_name(name, unit)
+        if column in sources:
+            raise LogFormatError(f"{where}: {source} [{unit}] and {sources[column]} [{units[column]}] both give the "
+                                 f"column name {column!r}; rename one of them")
+        data[column], units[column], sources[column] = values, unit, source
+    order = sorted(data)
+    table = pd.DataFrame({c: data[c] for c in order}, index=index, columns=order)
+    table.attrs["units"] = {c: units[c] for c in order}
+    return table

@@ -1,5 +1,6 @@
 """The simulation's truth (true l, c, mu, forces, ...): written beside the measurements under
-``/truth/point_NNNNNN`` and read only through :func:`read_truth`.
+``/truth`` (one dataset per value, one row per point; version 1: ``/truth/point_NNNNNN``) and
+read only through :func:`read_truth`.
 
 This module is deliberately not re-exported by :mod:`rig.logbook`: the readers the reduction
 uses (:mod:`rig.logbook.reader`) never open ``/truth``, so a reduction cannot use the truth by
@@ -8,24 +9,13 @@ accident; tests and validation plots import ``rig.logbook.truth`` explicitly.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-
-import numpy as np
 import pandas as pd
 
 from rig.logbook import h5format
 from rig.logbook import layout as L
-from rig.logbook.content import Quantity
-from rig.logbook.opening import open_log
+from rig.logbook.columnar import ColumnarLog
+from rig.logbook.opening import is_columnar, open_log
 from rig.logbook.tables import TableBuilder
-
-
-def write_truth(handle, index: int, truth: Mapping[str, Quantity]) -> None:
-    """Group ``/truth/point_NNNNNN`` with one scalar dataset (with ``units``) per true value."""
-    container = handle.require_group(L.TRUTH_GROUP)
-    group = container.create_group(L.point_group_name(index))
-    group.attrs[L.ATTR_INDEX] = np.int64(index)
-    h5format.write_quantities(group, truth)
 
 
 def read_truth(path: object) -> pd.DataFrame:
@@ -35,6 +25,8 @@ def read_truth(path: object) -> pd.DataFrame:
     of a real stand).
     """
     with open_log(path) as handle:
+        if is_columnar(handle):
+            return ColumnarLog(handle).frame("truth")
         table = TableBuilder(str(path))
         for index, group in h5format.point_groups(handle, L.TRUTH_GROUP):
             table.row(index)

@@ -47,3 +47,18 @@ def column_output(column: str) -> str:
         if column.startswith(prefix):
             return column[len(prefix):]
     return column
+
+
+DAMAGED = "damaged point"
+"""Start of the ``reason`` of a point the log could not give (rig.logbook.read_points)."""
+
+
+def with_damaged(frame: pd.DataFrame, indices: Sequence[int], damaged: Mapping[int, str]) -> pd.DataFrame:
+    """``frame`` (rows: the reduced points) with a row for every point of ``indices``: a damaged
+    point (``damaged[index]``: what is wrong, naming the dataset and the bad value) gets NaN in
+    every column and ``reason`` = ``"damaged point: <what>"``. Index name ``point``."""
+    frame = frame.reindex(pd.Index(list(indices), name="point"))
+    if damaged:
+        rows = list(damaged)
+        frame.loc[rows, "reason"] = [f"{DAMAGED}: {damaged[i]}" for i in rows]
+    return frame

@@ -1,8 +1,10 @@
 """The generic figure of a stand run: reduced quantities with error bars next to the truth.
 
 One panel per reduced quantity (l/a, c/a, mu_v, mu_T - those the table has); x is the innermost
-swept setting (the point index when nothing is swept); one series per combination of the outer
-swept settings and of the settings that tell the procedure's series apart. Points: reduced value +- its standard uncertainty u_<name>; line: true_<name>.
+swept setting, labelled with its name and unit (setting_label; the point index when nothing is
+swept); one series per combination of the outer swept settings and of the settings that tell
+the procedure's series apart. Points: reduced value +- its standard uncertainty u_<name>; line:
+true_<name>.
 The paper-like campaign figures are drawn elsewhere.
 """
 
@@ -15,8 +17,17 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from rig.logbook.units import safe_unit
 from rig.scenes.procedure import PlannedPoint, Procedure
 
+SETTING_NAMES = {
+    "brake_setpoint": r"brake set-point $T_{set}$", "normal_force": "normal force $F_N$",
+    "delta_h": r"yoke shift $\Delta h$", "omega_1_set": r"speed set-point $\omega_1$",
+    "l": "rolling-point offset $l$", "sigma": r"twist $\sigma$", "speed_step": "drive speed step",
+}
+"""Axis names of the settings the built-in stands sweep (others: the key's words)."""
+SETTING_UNITS = ("N m", "rad/s", "m/s", "N", "m", "rad", "s", "Hz", "K", "V")
+"""Units a setting key may end with (scene keys are ``<name>_<safe unit>``, e.g. ``brake_setpoint_N_m``)."""
 QUANTITIES = {"l_over_a": "$l/a$", "c_over_a": "$c/a$", "mu_v": r"$\mu_v$", "mu_T": r"$\mu_T$"}
 
 
@@ -37,7 +48,19 @@ def _series(table: pd.DataFrame, plan: Sequence[PlannedPoint], procedure: Proced
         x = np.array([by_index[int(table.index[r])].settings[x_name] for r in rows])
         order = np.argsort(x, kind="stable")
         series.append((label, x[order], np.asarray(rows)[order]))
-    return series, x_name
+    return series, setting_label(x_name)
+
+
+def setting_label(key: str) -> str:
+    """Axis label of a setting key with its name and unit: ``brake_setpoint_N_m`` ->
+    ``brake set-point $T_{set}$ [N m]``; a key without a unit suffix is dimensionless ([1])."""
+    name, unit = key, "1"
+    for candidate in SETTING_UNITS:
+        suffix = "_" + safe_unit(candidate)
+        if key.endswith(suffix) and len(key) > len(suffix):
+            name, unit = key[:-len(suffix)], candidate
+            break
+    return f"{SETTING_NAMES.get(name, name.replace('_', ' '))} [{unit}]"
 
 
 def reduced_vs_truth_figure(table: pd.DataFrame, plan: Sequence[PlannedPoint], procedure: Procedure, path: Path,

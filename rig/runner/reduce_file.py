@@ -1,8 +1,9 @@
 """``rig reduce LOG``: reduce a finished log again, from the scene stored in it.
 
 The log holds its scene's text verbatim; it is validated with the current stand code, the stand
-is built from it (nothing simulated) and reduces the log: reduced.csv (and the figure, when the
-scene asks for figures) go into the output folder, ``/reduced`` into the log.
+is built from it (nothing simulated) and reduces the log, with the folder's lock held (a log
+that a run is still writing is refused by name, rig.runner.folder_lock): reduced.csv (and the
+figure, when the scene asks for figures) go into the output folder, ``/reduced`` into the log.
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from pathlib import Path
 from rig.errors import LogFormatError, ParameterError
 from rig.logbook import point_indices, read_metadata
 from rig.runner.figures import reduced_vs_truth_figure
+from rig.runner.folder_lock import FolderLockedError, folder_lock
 from rig.runner.outputs import REDUCED_FIGURE, output_folder, staged_outputs
 from rig.runner.reduction import Reduction, reduce_to_files
 from rig.scenes.load import parse_scene
@@ -23,6 +25,14 @@ def reduce_log_file(log_path: Path, out_dir: Path | None = None, **parse_options
     """Reduce ``log_path`` into ``out_dir`` (default: the log's folder); returns the reduction and
     the files written. ``parse_options`` go to rig.scenes.parse_scene (e.g. ``stand_class_of``)."""
     log_path = Path(log_path)
+    try:
+        with folder_lock(log_path.parent, f"rig reduce {log_path.name}"):
+            return _reduce_locked(log_path, out_dir, **parse_options)
+    except FolderLockedError as error:
+        raise FolderLockedError(f"{log_path}: the log is being written (or reduced) by another process: {error}") from None
+
+
+def _reduce_locked(log_path: Path, out_dir: Path | None, **parse_options) -> tuple[Reduction, list[Path]]:
     metadata = read_metadata(log_path)
     if not point_indices(log_path):
         raise LogFormatError(f"{log_path}: the log holds no operating point (every point of its run failed?); "

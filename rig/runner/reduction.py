@@ -20,6 +20,7 @@ from rig.errors import LogFormatError, ParameterError, RigError
 from rig.logbook import write_reduced
 from rig.logbook.truth import read_truth
 from rig.logbook.units import DIMENSIONLESS
+from rig.reduction.table import DAMAGED
 from rig.runner.outputs import REDUCED_CSV
 from rig.stands.base import ContactSpec, Stand
 
@@ -34,13 +35,32 @@ TRUTH_SOURCES = {
 
 @dataclass(frozen=True)
 class Reduction:
-    """A reduced log: the table (index: point), the CSV written, and whether ``/reduced`` went into
-    the log (``problem`` says why not)."""
+    """A reduced log: the table (index: point), the CSV written, whether ``/reduced`` went into
+    the log (``problem`` says why not), and the damaged points (reduced to NaN, reason given)."""
 
     table: pd.DataFrame
     csv: Path
     stored_in_log: bool
     problem: str | None
+    damaged: tuple[int, ...] = ()
+
+    @property
+    def problems(self) -> list[str]:
+        """The lines for the summary: the damaged points and why /reduced is not in the log."""
+        lines = []
+        if self.damaged:
+            shown = ", ".join(map(str, self.damaged[:20])) + (" ..." if len(self.damaged) > 20 else "")
+            lines.append(f"{len(self.damaged)} damaged point(s) reduced to NaN (reduced.csv's reason names the "
+                         f"dataset and the bad value): {shown}")
+        return lines + ([self.problem] if self.problem else [])
+
+
+def damaged_points(table: pd.DataFrame) -> tuple[int, ...]:
+    """Indices of the rows whose reason says the log could not give the point."""
+    if "reason" not in table:
+        return ()
+    marked = table["reason"].astype(str).str.startswith(DAMAGED)
+    return tuple(int(i) for i in table.index[marked.to_numpy()])
 
 
 def attach_truth(table: pd.DataFrame, truth: pd.DataFrame | None) -> pd.DataFrame:
@@ -73,10 +93,11 @@ def reduce_to_files(stand: Stand, log_path: Path, contact: ContactSpec, out_dir:
     if not isinstance(table, pd.DataFrame):
         raise RigError(f"stand {stand.name!r}: reduce_log returned {type(table).__name__}, not a DataFrame")
     table = attach_truth(table, read_truth_if_any(log_path))
+    damaged = damaged_points(table)
     csv = out_dir / REDUCED_CSV
     table.to_csv(csv, index=True, index_label=table.index.name or "point")
     try:
         write_reduced(log_path, table)
     except (ParameterError, OSError) as error:  # e.g. a read-only log: reported; reduced.csv holds the table
-        return Reduction(table, csv, False, f"reduced table not stored in {log_path.name}: {error}")
-    return Reduction(table, csv, True, None)
+        return Reduction(table, csv, False, f"reduced table not stored in {log_path.name}: {error}", damaged)
+    return Reduction(table, csv, True, None, damaged)

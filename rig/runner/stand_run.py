@@ -1,11 +1,13 @@
 """A stand scene from start to outputs: log.h5, reduced.csv, the figure and summary.txt in one folder.
 
-Order: build the stand with the scene's effects only (an error there leaves nothing) -> open the
-log (resuming an interrupted run of the same scene) -> calibrate once -> sweep the points not
-yet logged, writing each as it finishes -> remove the previous run's outputs -> finalize log.h5
--> reduce (reduced.csv and ``/reduced`` in the log) -> figures -> summary.txt, the outputs
-staged and moved into the folder whole (rig.runner.outputs). The points run in this process,
-on a local process pool (``jobs`` > 1) or on a
+Order: lock the folder (rig.runner.folder_lock: a second run into it is refused by name) ->
+build the stand with the scene's effects only (an error there leaves nothing) -> open the log
+(resuming an interrupted run of the same scene; the points of a finished log of the same run are
+not simulated again, so a run killed while writing its outputs only redoes those) -> calibrate
+once -> sweep the points not yet logged, writing each as it finishes -> remove the previous run's
+outputs -> finalize log.h5 -> reduce (reduced.csv and ``/reduced`` in the log) -> figures ->
+summary.txt, the outputs staged and moved into the folder whole (rig.runner.outputs). The points
+run in this process, on a local process pool (``jobs`` > 1) or on a
 Dask cluster (``scheduler``: a scheduler's address; rig.runner.dask_pool). A point that does
 not settle is reported (policy: rig.runner.operator). A named error of the scene (a
 ParameterError, ConvergenceError, ... raised while calibrating or inside a point) removes the
@@ -25,6 +27,7 @@ from rig.errors import RigError
 from rig.logbook import LogWriter, RunMetadata, point_indices, read_point, utc_timestamp
 from rig.runner.dask_pool import check_scheduler
 from rig.runner.figures import reduced_vs_truth_figure
+from rig.runner.folder_lock import folder_lock
 from rig.runner.outputs import REDUCED_FIGURE, SUMMARY_NAME, output_folder, remove_stale, staged_outputs
 from rig.runner.pool import WorkerError
 from rig.runner.reduction import Reduction, read_truth_if_any, reduce_to_files
@@ -40,7 +43,7 @@ MAX_JOBS = 256
 @dataclass(frozen=True)
 class RunReport:
     """What a run wrote: the folder, the files (names), points planned / in the log / resumed,
-    the failures, whether it stopped early, and the summary text."""
+    the failures, whether it stopped early, the summary text and the damaged points of the log."""
 
     out_dir: Path
     files: tuple[str, ...]
@@ -50,6 +53,7 @@ class RunReport:
     failures: tuple[Failure, ...]
     stopped: bool
     summary: str
+    damaged: tuple[int, ...] = ()
 
 
 def _settle_times(log_path: Path) -> list[float]:
@@ -71,6 +75,12 @@ def run_stand_scene(scene: StandScene, out_dir: Path, *, jobs: int = 1, schedule
     if scheduler is not None:
         scheduler = check_scheduler(scheduler, jobs)
     out_dir = output_folder(out_dir)
+    with folder_lock(out_dir, f"rig run {scene.name}"):
+        return _run_locked(scene, out_dir, jobs, scheduler, progress)
+
+
+def _run_locked(scene: StandScene, out_dir: Path, jobs: int, scheduler: str | None, progress: bool | None) -> RunReport:
+    """The run, with the folder's lock held (a finished log of this run is reused: rig.logbook.LogWriter)."""
     log_path = out_dir / LOG_NAME
     stand = scene.build_stand()  # before the log is opened: a stand that cannot be built leaves nothing
     writer = LogWriter(log_path, RunMetadata(scene.text, scene.seed, scene.stand, utc_timestamp()))
@@ -94,15 +104,15 @@ def run_stand_scene(scene: StandScene, out_dir: Path, *, jobs: int = 1, schedule
         calibration=_calibration_names(log_path), operator_time_s=sweep.operator_time_s,
     )
     with staged_outputs(out_dir) as staging:
-        files, text = _write_outputs(scene, stand, log_path, facts, staging)
+        files, text, reduction = _write_outputs(scene, stand, log_path, facts, staging)
     return RunReport(out_dir, tuple(files), len(plan), facts.resumed + facts.written_now, facts.resumed,
-                     tuple(sweep.failures), sweep.stopped, text)
+                     tuple(sweep.failures), sweep.stopped, text, () if reduction is None else reduction.damaged)
 
 
 def _write_outputs(scene: StandScene, stand: Stand, log_path: Path, facts: RunFacts,
-                   staging: Path) -> tuple[list[str], str]:
+                   staging: Path) -> tuple[list[str], str, Reduction | None]:
     """Reduce the finalized log, draw the figures and write summary.txt into ``staging``; returns the
-    names of the run's files and the summary text."""
+    names of the run's files, the summary text and the reduction (None when not reduced)."""
     files, problems = [LOG_NAME], []
     reduction: Reduction | None = None
     empty = not point_indices(log_path)
@@ -111,8 +121,7 @@ def _write_outputs(scene: StandScene, stand: Stand, log_path: Path, facts: RunFa
     if scene.outputs.reduce and not empty:
         reduction = reduce_to_files(stand, log_path, scene.contact, staging)
         files.append(reduction.csv.name)
-        if reduction.problem:
-            problems.append(reduction.problem)
+        problems.extend(reduction.problems)
     campaign_lines: tuple[str, ...] = ()
     if scene.outputs.figures and reduction is not None:
         title = f"{scene.name}: {scene.description}"
@@ -127,4 +136,4 @@ def _write_outputs(scene: StandScene, stand: Stand, log_path: Path, facts: RunFa
     files.append(SUMMARY_NAME)
     text = summary_text(scene, facts, None if reduction is None else reduction.table, problems, files, campaign_lines)
     (staging / SUMMARY_NAME).write_text(text, encoding="utf-8")
-    return files, text
+    return files, text, reduction

@@ -73,6 +73,57 @@ def write_run(path: Path, indices=range(N_POINTS), *, seed: int = 7, finalize: b
     return writer
 
 
+def _v1_quantities(group: h5py.Group, values) -> None:
+    for name, q in values.items():
+        group.create_dataset(name, data=np.float64(q.value)).attrs["units"] = q.unit
+
+
+def _v1_point(points: h5py.Group, p: PointRecord) -> None:
+    """One point in the layout of format version 1 (docs/log-format.md), as earlier versions wrote it."""
+    group = points.create_group(f"point_{p.index:06d}")
+    group.attrs["index"] = np.int64(p.index)
+    _v1_quantities(group.create_group("settings"), p.settings)
+    _v1_quantities(group.create_group("readings"), p.readings)
+    channels = group.create_group("channels")
+    for name, channel in p.channels.items():
+        ds = channels.create_dataset(name, data=channel.samples)
+        ds.attrs.update(units=channel.unit, sample_rate_Hz=np.float64(channel.sample_rate_Hz),
+                        start_time_s=np.float64(channel.start_time_s))
+    if p.counters is not None:
+        counters = group.create_group("counters")
+        counters.attrs["gate_time_s"] = np.float64(p.counters.gate_time_s)
+        for name, counter in p.counters.counters.items():
+            ds = counters.create_dataset(name, data=np.int64(counter.count))
+            ds.attrs.update(units="count", marks_per_rev=np.int64(counter.marks_per_rev))
+    calibration = group.create_group("calibration")
+    for name, record in p.calibration.items():
+        _v1_quantities(calibration.create_group(name), record)
+
+
+def write_v1_run(path: Path) -> None:
+    """The same run in the layout of format version 1 (one group per point), as earlier versions
+    wrote it: the readers of version-1 logs are tested on it."""
+    import rig.logbook.h5format as h5format
+
+    with h5py.File(path, "w") as f:
+        h5format.write_metadata(f, metadata())
+        f.attrs["format_version"] = np.int64(1)
+        points, truths = f.create_group("points"), f.create_group("truth")
+        for k in range(N_POINTS):
+            _v1_point(points, point(k))
+            group = truths.create_group(f"point_{k:06d}")
+            group.attrs["index"] = np.int64(k)
+            _v1_quantities(group, truth(k))
+
+
+def journal_frames(path: Path) -> list[int]:
+    """Indices of the complete frames in the staging journal of the log ``path`` (none yet: [])."""
+    from rig.logbook import journal, staging_dir
+
+    file = staging_dir(path) / "points.journal"
+    return [frame.index for frame in journal.scan(file)[0]] if file.is_file() else []
+
+
 def dump(path: Path) -> dict:
     """Every object of an HDF5 file: {path: (kind, attrs, data)} (for content comparison)."""
     out = {}
@@ -96,28 +147,30 @@ def _hang(marker: Path, handle: h5py.File) -> None:
 
 def main(mode: str, path: str, marker: str) -> None:
     """Child process: write a run and hang mid-write (the parent kills it with SIGKILL)."""
-    import rig.logbook.h5format as h5format
     import rig.logbook.reduced as reduced
     import rig.logbook.writer as writer
 
     log, signal = Path(path), Path(marker)
-    if mode == "point":  # hang in the middle of point 3
-        original = h5format.write_channel
+    if mode == "point":  # hang in the middle of writing point 3's frame (half of it on disk)
+        import rig.logbook.journal as journal
+        original = journal.encode
 
-        def write_channel(group, name, channel):
-            original(group, name, channel)
-            if "point_000003" in group.name:
-                _hang(signal, group.file)
-        h5format.write_channel = write_channel
+        def encode(entry):
+            frame = original(entry)
+            if entry.index == 3:
+                with open(writer.staging_dir(log) / writer.JOURNAL, "ab") as handle:
+                    handle.write(frame[: len(frame) // 2])
+                signal.touch()
+                while True:
+                    time.sleep(1.0)
+            return frame
+        journal.encode = encode
         write_run(log)
-    elif mode == "finalize":  # hang after copying two points into the new log
-        original_copy = writer._copy_part
-
-        def copy_part(part, handle, index):
-            original_copy(part, handle, index)
-            if index == 1:
-                _hang(signal, handle)
-        writer._copy_part = copy_part
+    elif mode == "finalize":  # hang after laying out part of the new log
+        def write_columnar(root, entries):
+            root.create_group("points").create_dataset("index", data=np.arange(2))
+            _hang(signal, root.file)
+        writer.write_columnar = write_columnar
         write_run(log)
     elif mode == "reduced":  # hang in the middle of writing /reduced
         def write_table(group, table, units):

@@ -1,4 +1,7 @@
-"""Damaged, foreign and truncated files raise LogFormatError naming the file, point and fault."""
+"""Damaged, foreign and truncated files raise LogFormatError naming the file, point and fault.
+
+These hold for logs of format version 1 (one group per point, as earlier versions wrote them:
+``rig reduce`` still reads them); the columnar layout's faults: test_logbook_columnar.py."""
 
 from __future__ import annotations
 
@@ -27,7 +30,7 @@ SCHEMA = LogSchema(
 @pytest.fixture(scope="module")
 def good(tmp_path_factory: pytest.TempPathFactory) -> Path:
     path = tmp_path_factory.mktemp("good") / "run.h5"
-    samples.write_run(path)
+    samples.write_v1_run(path)
     return path
 
 
@@ -78,8 +81,8 @@ def test_foreign_hdf5_file(tmp_path: Path) -> None:
 
 
 def test_other_format_version(log: Path) -> None:
-    _edit(log, lambda f: f.attrs.__setitem__("format_version", 2))
-    with pytest.raises(LogFormatError, match="'format_version' = 2; this friction-rig reads version 1"):
+    _edit(log, lambda f: f.attrs.__setitem__("format_version", 3))
+    with pytest.raises(LogFormatError, match="'format_version' = 3; this friction-rig reads versions 1 and 2"):
         lb.point_indices(log)
 
 
@@ -165,7 +168,7 @@ def test_column_name_clash_is_an_error(tmp_path: Path) -> None:
     writer = LogWriter(path, samples.metadata())
     writer.write_point(PointRecord(0, {"F": Quantity(1.0, "N m"), "F_N": Quantity(2.0, "m")}), {})
     writer.finalize()
-    with pytest.raises(LogFormatError, match=r"point 0: .*both give the column name 'F_N_m'"):
+    with pytest.raises(LogFormatError, match=r"clash\.h5: .*both give the column name 'F_N_m'"):
         lb.read_settings(path)
 
 

@@ -40,7 +40,7 @@ def test_snippet_reads_a_log_with_plain_h5py(tmp_path: Path) -> None:
     assert len(lines) == samples.N_POINTS
     first = samples.point(0).channels["F_dyn"]
     name, f_n, unit, channel_unit, t0, x0 = lines[0].split()
-    assert (name, float(f_n), unit, channel_unit) == ("point_000000", 96.2, "N", "N")
+    assert (name, float(f_n), unit, channel_unit) == ("0", 96.2, "N", "N")
     assert float(t0) == pytest.approx(2.5) and float(x0) == pytest.approx(first.samples[0])
 
 

@@ -11,7 +11,7 @@ import logbook_samples as samples
 import pandas as pd
 import pytest
 
-import rig.logbook.h5format as h5format
+import rig.logbook.journal as journal_module
 import rig.logbook.reduced as reduced
 import rig.logbook.writer as writer_module
 from rig.errors import LogFormatError, ParameterError, RigError
@@ -84,13 +84,19 @@ def test_stale_staging_without_run_part_is_cleared(tmp_path: Path) -> None:
     assert sorted(p.name for p in staging_dir(path).iterdir()) == ["run.h5"]
 
 
-def test_damaged_part_is_named(tmp_path: Path) -> None:
+def test_damaged_journal_frame_drops_it_and_what_follows(tmp_path: Path) -> None:
     path = tmp_path / "run.h5"
-    samples.write_run(path, [0, 1], finalize=False)
-    part = staging_dir(path) / "point_000001.h5"
-    part.write_bytes(part.read_bytes()[:500])
-    with pytest.raises(LogFormatError, match=r"point_000001\.h5: damaged part .*delete it"):
-        LogWriter(path, samples.metadata())
+    samples.write_run(path, [0, 1, 2], finalize=False)
+    journal = staging_dir(path) / "points.journal"
+    data = bytearray(journal.read_bytes())
+    data[len(data) // 2] ^= 0xFF  # a flipped byte inside point 1's frame: its checksum fails
+    journal.write_bytes(bytes(data))
+    writer = LogWriter(path, samples.metadata())
+    assert writer.done == {0}  # points 1 and 2 are simulated again, never read wrong
+    for k in range(1, samples.N_POINTS):
+        writer.write_point(samples.point(k), samples.truth(k))
+    writer.finalize()
+    assert samples.dump(path) == samples.dump(samples.write_run(tmp_path / "ref.h5").path)
 
 
 def _fail_half_way(*_args: object) -> None:
@@ -100,22 +106,20 @@ def _fail_half_way(*_args: object) -> None:
 def test_point_write_failing_half_way_leaves_previous_parts(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
     path = tmp_path / "run.h5"
     writer = samples.write_run(path, [0, 1], finalize=False)
-    before = sorted(p.name for p in staging_dir(path).iterdir())
-    original = h5format.write_channel
-    calls = []
-
-    def write_then_fail(group, name, channel):  # the first channel is written, the second fails
-        calls.append(name)
-        if len(calls) > 1:
-            _fail_half_way()
-        original(group, name, channel)
-
-    monkeypatch.setattr(h5format, "write_channel", write_then_fail)
+    before = {p.name: p.read_bytes() for p in staging_dir(path).iterdir()}
+    monkeypatch.setattr(journal_module, "encode", _fail_half_way)
     with pytest.raises(RuntimeError, match="disk full"):
         writer.write_point(samples.point(2), samples.truth(2))
-    assert calls == ["F_dyn", "U_bridge"]
-    assert sorted(p.name for p in staging_dir(path).iterdir()) == before  # no part, no temporary file
+    assert {p.name: p.read_bytes() for p in staging_dir(path).iterdir()} == before
     assert writer.done == {0, 1} and LogWriter(path, samples.metadata()).done == {0, 1}
+    monkeypatch.undo()
+    journal = staging_dir(path) / "points.journal"
+    with journal.open("ab") as handle:  # a frame torn by a write that failed half-way (disk full)
+        handle.write(b"RIGP torn")
+    for k in range(2, samples.N_POINTS):  # the same writer goes on: the torn bytes are cut off
+        writer.write_point(samples.point(k), samples.truth(k))
+    writer.finalize()
+    assert samples.dump(path) == samples.dump(samples.write_run(tmp_path / "ref.h5").path)
 
 
 def test_finalize_failing_half_way_leaves_previous_log(
@@ -124,14 +128,12 @@ def test_finalize_failing_half_way_leaves_previous_log(
     path = tmp_path / "run.h5"
     path.write_bytes(b"previous log")
     writer = samples.write_run(path, finalize=False)
-    original = writer_module._copy_part
 
-    def copy_then_fail(part, log, index):
-        if index == 2:
-            _fail_half_way()
-        original(part, log, index)
+    def lay_out_then_fail(root, entries):
+        root.create_group("points")
+        _fail_half_way()
 
-    monkeypatch.setattr(writer_module, "_copy_part", copy_then_fail)
+    monkeypatch.setattr(writer_module, "write_columnar", lay_out_then_fail)
     with pytest.raises(RuntimeError, match="disk full"):
         writer.finalize()
     assert path.read_bytes() == b"previous log"
@@ -163,14 +165,36 @@ def test_write_reduced_failing_half_way_leaves_log(
 
 
 def test_writing_a_point_never_rewrites_earlier_ones(tmp_path: Path) -> None:
-    """Each point costs one new part (the writer is O(total size), not O(points^2))."""
+    """Each point appends one frame to the journal (the writer is O(total size), not O(points^2))."""
     path = tmp_path / "run.h5"
     writer = samples.write_run(path, [0, 1, 2], finalize=False)
-    before = {p.name: (p.stat().st_mtime_ns, p.stat().st_ino) for p in staging_dir(path).iterdir()}
+    journal = staging_dir(path) / "points.journal"
+    before, names = journal.read_bytes(), sorted(p.name for p in staging_dir(path).iterdir())
     writer.write_point(samples.point(3), samples.truth(3))
-    after = {p.name: (p.stat().st_mtime_ns, p.stat().st_ino) for p in staging_dir(path).iterdir()}
-    assert set(after) - set(before) == {"point_000003.h5"}
-    assert all(after[name] == stamp for name, stamp in before.items())
+    after = journal.read_bytes()
+    assert after[: len(before)] == before and len(after) > len(before)
+    assert sorted(p.name for p in staging_dir(path).iterdir()) == names
+    assert samples.journal_frames(path) == [0, 1, 2, 3]
+
+
+def test_a_finished_log_of_the_same_run_is_not_written_again(reference: Path, tmp_path: Path) -> None:
+    path = tmp_path / "run.h5"
+    path.write_bytes(reference.read_bytes())
+    stamp = path.stat().st_mtime_ns
+    writer = LogWriter(path, samples.metadata())
+    assert writer.done == set(range(samples.N_POINTS))  # nothing to simulate
+    writer.finalize()
+    assert path.stat().st_mtime_ns == stamp and not staging_dir(path).exists()
+    partial = tmp_path / "partial.h5"
+    samples.write_run(partial, [0, 2, 4])  # a finished log, some points missing (e.g. not settled)
+    writer = LogWriter(partial, samples.metadata())
+    assert writer.done == {0, 2, 4}
+    for k in (1, 3, 5):
+        writer.write_point(samples.point(k), samples.truth(k))
+    writer.finalize()
+    assert partial.read_bytes() == reference.read_bytes()
+    other = samples.write_run(tmp_path / "other.h5", [0], seed=99).path
+    assert LogWriter(other, samples.metadata()).done == frozenset()  # another run's log is no base
 
 
 def test_log_gets_ordinary_file_permissions(tmp_path: Path) -> None:

@@ -5,7 +5,6 @@ from __future__ import annotations
 import math
 import tempfile
 from pathlib import Path
-from unittest import mock
 
 import h5py
 import logbook_samples as samples
@@ -34,7 +33,7 @@ def test_metadata_round_trip(log: Path) -> None:
     assert meta == samples.metadata()
     assert meta.package_version == rig.__version__
     with h5py.File(log, "r") as f:
-        assert f.attrs["format"] == "friction-rig-log" and f.attrs["format_version"] == 1
+        assert f.attrs["format"] == "friction-rig-log" and f.attrs["format_version"] == 2
         assert f.attrs["seed"] == 7 and f.attrs["stand"] == "stand_A"
 
 
@@ -128,12 +127,10 @@ def test_write_reduced_refuses_tables_without_units(log: Path, table, units, mes
 def test_no_counters_means_no_counter_group_and_no_call(tmp_path: Path) -> None:
     path = tmp_path / "plain.h5"
     writer = LogWriter(path, samples.metadata())
-    with mock.patch("rig.logbook.h5format.write_counters") as write_counters:
-        writer.write_point(PointRecord(0, {"F_N": Quantity(9.0, "N")}), {})
-    write_counters.assert_not_called()
+    writer.write_point(PointRecord(0, {"F_N": Quantity(9.0, "N")}), {})
     writer.finalize()
     with h5py.File(path, "r") as f:
-        assert "counters" not in f["points/point_000000"]
+        assert "counters" not in f["points"]
     assert lb.read_point(path, 0).counters is None
     assert lb.read_counters(path).shape == (1, 0)
 

@@ -113,3 +113,11 @@ def test_a_run_whose_every_point_failed_says_so_and_reduces_nothing(tmp_path):
     assert [f.index for f in report.failures] == [0] and report.files == ("log.h5", "summary.txt")
     assert "not reduced: the log holds no operating point (every point failed)" in report.summary
     assert not (tmp_path / "reduced.csv").exists()
+
+
+def test_figure_axis_is_labelled_with_the_setting_name_and_unit():
+    from rig.runner.figures import setting_label
+
+    assert setting_label("brake_setpoint_N_m") == "brake set-point $T_{set}$ [N m]"
+    assert setting_label("omega_1_set_rad_s") == r"speed set-point $\omega_1$ [rad/s]"
+    assert setting_label("load_N") == "load [N]" and setting_label("speed_step") == "drive speed step [1]"

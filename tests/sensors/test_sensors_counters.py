@@ -1,4 +1,4 @@
-"""Stroboscope discs, photocells, pulse amplifiers and counters on a common gate (simpy)."""
+"""Stroboscope discs, photocells, pulse amplifiers and counters on a common gate."""
 
 from __future__ import annotations
 
@@ -7,8 +7,10 @@ from unittest import mock
 
 import numpy as np
 import pytest
+import simpy
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from simpy.events import URGENT
 
 from sensors.counters import (
     COUNT_QUANTISATION_STD,
@@ -203,3 +205,69 @@ def test_crossing_times_vectorised_match_analytic():
     times = disc.crossing_times(t, 3.0 * t**2)
     analytic = np.sqrt((0.1 + 2 * np.pi * np.arange(4) / 8) / 3.0)
     np.testing.assert_allclose(times, analytic, atol=2e-4)  # chord interpolation error ~ dt^2 theta''/8
+
+
+def _event_driven_count(channel, t, theta, t_open, duration):
+    """Reference: the event-driven counter of earlier versions (one simpy event per pulse, gate
+    edges URGENT so that they act before a pulse at a tie), for the same channel and draws."""
+    env = simpy.Environment(initial_time=t_open)
+    state = {"open": False, "count": 0}
+
+    def edge(at):
+        event = simpy.events.Event(env)
+        event._ok, event._value = True, None
+        env.schedule(event, URGENT, max(at - env.now, 0.0))
+        return event
+
+    def gate():
+        yield edge(t_open)
+        state["open"] = True
+        yield edge(t_open + duration)
+        state["open"] = False
+
+    times = channel.disc.crossing_times(t, theta)
+    window = times[np.searchsorted(times, t_open, "left"):np.searchsorted(times, t_open + duration, "right")]
+    fires = channel.amplifier.fires(channel.photocell.amplitudes_V(window.size))
+
+    def pulses():
+        for at, fire in zip(window.tolist(), fires.tolist()):
+            yield env.timeout(max(at - env.now, 0.0))
+            state["count"] += bool(fire and state["open"])
+
+    env.process(gate())
+    env.process(pulses())
+    env.run()
+    return state["count"]
+
+
+@settings(max_examples=80, deadline=None)
+@given(
+    seed=st.integers(0, 2**32 - 1),
+    marks=st.integers(1, 120),
+    noise_std_V=st.sampled_from([None, 0.00625, 0.025]),
+    accelerating=st.booleans(),
+    t_open=st.floats(0.0, 2.0),
+    duration=st.floats(0.05, 4.0),
+)
+def test_counts_equal_the_event_driven_reference(seed, marks, noise_std_V, accelerating, t_open, duration):
+    # Same pulses, same amplitude draws (same generator state), same half-open gate: same count,
+    # with the amplitude-noise effect on or off, for a constant or an accelerating/reversing wheel.
+    t = np.linspace(0.0, 6.5, 400)
+    theta = 25.0 * t + (3.0 * np.sin(2.0 * t) if accelerating else 0.0) + 0.1
+    if accelerating:
+        theta = theta - 2.0 * t ** 2  # slows down, stops and reverses within the samples
+    counts = []
+    for _ in range(2):
+        noise = None if noise_std_V is None else WhiteNoise(noise_std_V, np.random.default_rng(seed))
+        counts.append(CounterChannel(StrobeDisc(marks, 0.3), Photocell(amplitude_noise=noise)))
+    fast = SpeedCounters({"w": counts[0]}).measure({"w": (t, theta)}, t_open, duration).counts["w"]
+    assert fast == _event_driven_count(counts[1], t, theta, t_open, duration)
+
+
+def test_aligned_pulses_at_both_gate_edges_against_reference():
+    # crossings at exact binary instants, gate edges on pulses: the tie rule of both models
+    t = np.linspace(0.0, 4.0, 17)
+    theta = 2 * np.pi * t
+    for t_open, duration in ((0.5, 1.0), (0.25, 2.75), (0.0, 0.25)):
+        fast = _one(4).measure({"w": (t, theta)}, t_open, duration).counts["w"]
+        assert fast == _event_driven_count(CounterChannel(StrobeDisc(4)), t, theta, t_open, duration)

@@ -26,12 +26,12 @@ import pandas as pd
 
 from rig.contact.surrogate import TableDomain
 from rig.errors import LogFormatError
-from rig.logbook import PointRecord, point_indices, read_point
+from rig.logbook import PointRecord, read_points
 from rig.reduction import stand_b
 from rig.reduction.coefficients import OutsideModelDomain
 from rig.reduction.iteration import ReductionSettings
 from rig.reduction.readings import Measured, converter_mean
-from rig.reduction.table import column_output, reduced_table
+from rig.reduction.table import column_output, reduced_table, with_damaged
 from rig.stands.disc_roller.contact import Law
 from rig.stands.disc_roller.instruments import CHANNELS, record_from_fields
 from rig.stands.disc_roller.parameters import StandBParameters
@@ -104,17 +104,25 @@ def reduce_log(
     """Reduced table of a stand-B log, one row per point (index ``point`` = the log's point index).
 
     law_for(b/a) -> law, domain_for(b/a) -> its TableDomain (the stand's); settings: the chain's.
+    The log is read once; a damaged point is a row of NaN whose ``reason`` names what is wrong.
     """
     settings = ReductionSettings() if settings is None else settings
-    indices = point_indices(path)
-    points = []
-    for index in indices:
-        record = read_point(path, index)
-        readings = point_readings(record, params, f"{path}: point {index}")
+    indices, reduced, points, damaged = [], [], [], {}
+    for index, record in read_points(path):
+        indices.append(index)
+        try:
+            if isinstance(record, LogFormatError):
+                raise record
+            readings = point_readings(record, params, f"point {index}")
+        except LogFormatError as error:  # a damaged point: NaN with the reason, the others go on
+            damaged[index] = str(error)
+            continue
         law = coefficients(law_for(readings.b_over_a), domain_for(readings.b_over_a))
         points.append(stand_b.reduce(readings, law, params.geometry, settings))
+        reduced.append(index)
     frame = reduced_table(points)
-    frame.index = pd.Index(indices, name="point")
+    frame.index = pd.Index(reduced, name="point")
+    frame = with_damaged(frame, indices, damaged)
     frame.attrs["units"] = {name: _unit(name) for name in frame.columns}
     return frame
 

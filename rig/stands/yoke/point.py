@@ -22,7 +22,6 @@ from rig.stands.yoke import instruments, integration
 from rig.stands.yoke.brake import BrakeFrictionFluctuation, BrakeLoop, IdealBrake
 from rig.stands.yoke.drive_train import BearingFriction, Compliance, DriveTrain, SpeedReference
 from rig.stands.yoke.parameters import LOG_SETTINGS
-from rig.stands.yoke.steady_state import steady_state
 from sensors import effect_rng
 
 REST = "rest"
@@ -45,15 +44,12 @@ class YokePoint(PointSimulation):
         self.seed = validate.integer("seed", seed, 0)
         p = stand.params
         self.contact = stand.contact_for(self.settings)
-        omega_1 = self.settings["omega_1_set_rad_s"]
-        t_set = self.settings["brake_setpoint_N_m"]
         bearing = None
         if "bearing_friction" in stand.effects:
             e = stand.effects["bearing_friction"]
             bearing = BearingFriction(e["moment_1_N_m"], e["moment_2_N_m"], p.brake_speed_eps_rad_s)
         self.bearing = bearing
-        self.target = steady_state(self.contact, omega_1, t_set, brake_speed_eps=p.brake_speed_eps_rad_s,
-                                   bearing=bearing)
+        self.target = stand.steady_state(self.settings, bearing)
         self.start, start_state = self._start(previous)
         self.train = None
         if stand.drive is DriveMode.DYNAMIC:
@@ -70,10 +66,8 @@ class YokePoint(PointSimulation):
         if previous is None:
             return REST, None
         prev = self.stand.check_settings(previous)
-        p = self.stand.params
         try:
-            op = steady_state(self.stand.contact_for(prev), prev["omega_1_set_rad_s"], prev["brake_setpoint_N_m"],
-                              brake_speed_eps=p.brake_speed_eps_rad_s, bearing=self.bearing)
+            op = self.stand.steady_state(prev, self.bearing)
         except ParameterError:
             return REST, None  # the previous settings have no steady state: start from rest
         return PREVIOUS, op

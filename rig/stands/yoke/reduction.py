@@ -31,14 +31,14 @@ import numpy as np
 import pandas as pd
 
 from rig.errors import LogFormatError
-from rig.logbook import PointRecord, point_indices, read_point
+from rig.logbook import PointRecord, read_points
 from rig.logbook.truth import read_truth
 from rig.reduction import stand_a
 from rig.reduction.coefficients import OutsideModelDomain
 from rig.reduction.geometry import StandAGeometry
 from rig.reduction.iteration import ReductionSettings
 from rig.reduction.readings import ForceCalibration, Measured, converter_mean, scale_mean
-from rig.reduction.table import TRUTH_COLUMNS, column_output, reduced_table
+from rig.reduction.table import TRUTH_COLUMNS, column_output, reduced_table, with_damaged
 from rig.contact.surrogate import TableDomain
 from rig.stands.yoke.contact_forces import Law
 from rig.stands.yoke.instruments import BALANCE, CHANNELS, DYNAMOMETER
@@ -119,25 +119,33 @@ def point_readings(record: PointRecord, params: YokeParameters, geometry: StandA
 def reduce_log(path, params: YokeParameters, law_for: LawFor,
                settings: ReductionSettings | None = None) -> pd.DataFrame:
     """Reduced table of a stand-A log, one row per point (index ``point`` = the log's point index),
-    with ``true_*`` columns when the log has a truth group; ``attrs["units"]`` = {column: unit}."""
+    with ``true_*`` columns when the log has a truth group; ``attrs["units"]`` = {column: unit}.
+    The log is read once (rig.logbook.read_points); a damaged point (a non-finite sample, a
+    missing dataset) is a row of NaN whose ``reason`` names the dataset and the bad value."""
     settings = ReductionSettings() if settings is None else settings
-    indices = point_indices(path)
-    points, out_of_range = [], []
-    for index in indices:
-        record = read_point(path, index)
-        where = f"{path}: point {index}"
-        geometry = params.geometry_at(_quantity(record.settings, "delta_h", where))
-        readings = point_readings(record, params, geometry, where)
+    indices, reduced, points, out_of_range, damaged = [], [], [], [], {}
+    for index, record in read_points(path):
+        indices.append(index)
+        where = f"point {index}"
+        try:
+            if isinstance(record, LogFormatError):
+                raise record
+            geometry = params.geometry_at(_quantity(record.settings, "delta_h", where))
+            readings = point_readings(record, params, geometry, where)
+        except LogFormatError as error:  # a damaged point: NaN with the reason, the others go on
+            damaged[index] = str(error)
+            continue
         law, domain = law_for(readings.b_over_a, geometry)
         points.append(stand_a.reduce(readings, coefficients(law, domain), geometry, settings))
+        reduced.append(index)
         out_of_range.append(_out_of_range(record))
-    truth = _truth_rows(path, indices)
-    frame = reduced_table(points, truth)
-    frame.index = pd.Index(indices, name="point")
-    for index, problems in zip(indices, out_of_range):
+    frame = reduced_table(points, _truth_rows(path, reduced))
+    frame.index = pd.Index(reduced, name="point")
+    for index, problems in zip(reduced, out_of_range):
         for columns, why in problems:
             frame.loc[index, [c for name in columns for c in (name, f"u_{name}", f"U95_{name}")]] = np.nan
             frame.loc[index, "reason"] = "; ".join(r for r in (frame.loc[index, "reason"], why) if r)
+    frame = with_damaged(frame, indices, damaged)
     frame.attrs["units"] = {column: UNITS.get(column_output(column), "1") for column in frame.columns}
     return frame
 
@@ -161,4 +169,4 @@ def _truth_rows(path, indices: list[int]) -> list[dict[str, float]] | None:
     except LogFormatError:
         return None  # a log without truth (e.g. of a real stand)
     columns = [c for c in TRUTH_COLUMNS if c in table.columns]
-    return [{c: float(table.loc[i, c]) for c in columns} for i in indices]
+    return table.reindex(indices)[columns].astype(float).to_dict("records")

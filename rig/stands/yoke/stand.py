@@ -14,6 +14,7 @@ physics in contact_forces, drive_train, brake, steady_state; docs/stand-a.md.
 
 from __future__ import annotations
 
+from collections import OrderedDict
 from collections.abc import Mapping
 from typing import ClassVar
 
@@ -25,9 +26,14 @@ from rig.stands.yoke import instruments, laws
 from rig.stands.yoke import parameters as spec
 from rig.stands.yoke.brake import critical_gain
 from rig.stands.yoke.contact_forces import StandAContact
+from rig.stands.yoke.drive_train import BearingFriction
 from rig.stands.yoke.integration import GATE_SAMPLE_RATE_HZ
 from rig.stands.yoke.point import YokePoint
 from rig.stands.yoke.reduction import reduce_log
+from rig.stands.yoke.steady_state import OperatingPoint, steady_state
+
+STEADY_STATES_KEPT = 2
+"""Steady operating points a stand remembers (this point's and the previous one's)."""
 
 DYNAMIC_ONLY = ("drive_compliance", "brake_dynamics", "brake_friction_fluctuation")
 
@@ -70,6 +76,7 @@ class YokeStand(Stand):
         self.drive = drive
         self._law_factory = law_factory
         self._calibrations: dict[int, object] = {}
+        self._steady: OrderedDict[tuple, OperatingPoint] = OrderedDict()
 
     def _check_effects(self, drive: DriveMode) -> None:
         if drive is DriveMode.QUASI_STATIC:
@@ -115,6 +122,22 @@ class YokeStand(Stand):
         b_over_a = geometry.b_over_a(f_n)
         law, domain = self.law(b_over_a, geometry)
         return StandAContact(geometry, f_n, b_over_a, p.mu, law, domain, p.slip_speed_eps_m_s)
+
+    def steady_state(self, settings: Mapping[str, float], bearing: BearingFriction | None) -> OperatingPoint:
+        """The steady operating point of checked ``settings`` (rig.stands.yoke.steady_state), kept for
+        the last STEADY_STATES_KEPT settings: a point's start is the previous point's steady state,
+        which that point has just computed (a pure function of the settings, so reusing it changes
+        nothing). Raises ParameterError where there is none (never kept)."""
+        key = (tuple(sorted(settings.items())), None if bearing is None else (bearing.moment_1, bearing.moment_2))
+        found = self._steady.get(key)
+        if found is None:
+            found = steady_state(self.contact_for(settings), settings["omega_1_set_rad_s"],
+                                 settings["brake_setpoint_N_m"], brake_speed_eps=self.params.brake_speed_eps_rad_s,
+                                 bearing=bearing)
+            self._steady[key] = found
+            while len(self._steady) > STEADY_STATES_KEPT:
+                self._steady.popitem(last=False)
+        return found
 
     def calibration(self, seed: int):
         """The calibration record of dynamometer 10 for the run ``seed`` (made once, then kept)."""

@@ -1,0 +1,134 @@
+"""Cost of a study per operating point: time and log bytes for 100 / 1 600 / 10 000 points.
+
+    python benchmarks/bench_scale.py [--points 100 1600 10000] [--repeats 1] [--jobs 1]
+                                     [--dask-points 100000] [--dask-workers 2] [--gate-time 4.0]
+
+The scene is the built-in `default` (stand A, quasi-static drive, 4 s gates, instruments on)
+with only the sweep's `num` raised (issue 12). Each run is `python -m rig run SCENE -o DIR` in a
+fresh process (imports, the table from a warm cache, the sweep, log, reduction, figure, summary).
+Reported per size: median wall time [s] and its spread over the repeats, the time per point
+[ms], the marginal time per point between sizes [ms] (linear growth: the marginal cost does not
+rise with the size), log.h5 [bytes], the raw samples the points really record (dynamometer and
+balance channels: 8 bytes a sample) and the log's overhead beyond them [bytes per point].
+
+``--dask-points N`` also runs N points on a Dask LocalCluster of ``--dask-workers`` single-thread
+workers (`rig run --scheduler`), a large study as a user would run it, and prints points per
+second and bytes per point. On a shared machine wall times are noisy: the CPU time of the child
+and the load average before each run are printed beside them. Never asserts: a benchmark reports.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import resource
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import h5py
+
+BUDGET_S_1600 = 10.0  # issue 12: 1 600 points <= 10 s with -j 1
+BUDGET_OVERHEAD_B = 1024.0  # issue 12: <= 1 KB per point beyond the raw samples
+
+
+def scene_file(folder: Path, points: int, gate_time_s: float) -> Path:
+    """The default scene with ``points`` brake set-points (and the gate time given)."""
+    from rig.scenes import load_scene
+
+    text = load_scene("default").text
+    sweep, gate = "num = 9 }", "gate_time_s = 4.0 "
+    assert sweep in text and gate in text, "the default scene changed; update bench_scale.py"
+    path = folder / f"scale_{points}.toml"
+    path.write_text(text.replace(sweep, f"num = {points} }}").replace(gate, f"gate_time_s = {gate_time_s} "))
+    return path
+
+
+def raw_sample_bytes(log: Path) -> int:
+    """Bytes of the samples the points record (8 per float64 sample), either log layout."""
+    total = 0
+    with h5py.File(log, "r") as f:
+        if f.attrs["format_version"] >= 2:
+            for channel in f["points/channels"].values():
+                total += channel["samples"].size * 8
+        else:
+            for point in f["points"].values():
+                total += sum(ds.size * 8 for ds in point["channels"].values())
+    return total
+
+
+def run_once(scene: Path, jobs: int, extra: list[str] | None = None) -> dict[str, float]:
+    """One `python -m rig run` in a fresh process: wall, CPU [s], load average, log bytes."""
+    load = os.getloadavg()[0]
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    with tempfile.TemporaryDirectory(prefix="bench_scale_") as out:
+        command = [sys.executable, "-m", "rig", "run", str(scene), "-o", out, "--jobs", str(jobs), *(extra or [])]
+        t0 = time.perf_counter()
+        done = subprocess.run(command, capture_output=True, text=True)
+        wall = time.perf_counter() - t0
+        log = Path(out) / "log.h5"
+        size = log.stat().st_size if log.exists() else 0
+        raw = raw_sample_bytes(log) if log.exists() else 0
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if done.returncode != 0:
+        print(f"warning: `{' '.join(command)}` exited with {done.returncode}:\n{done.stderr[-2000:]}", file=sys.stderr)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return {"wall": wall, "cpu": cpu, "load": load, "size": size, "raw": raw}
+
+
+def dask_run(scene: Path, workers: int) -> dict[str, float]:
+    """The scene on a LocalCluster of ``workers`` one-thread worker processes."""
+    from distributed import LocalCluster
+
+    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+        return run_once(scene, 1, ["--scheduler", cluster.scheduler_address])
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--points", type=int, nargs="+", default=[100, 1600, 10000], help="study sizes")
+    parser.add_argument("--repeats", type=int, default=1, help="runs per size (median reported)")
+    parser.add_argument("--jobs", type=int, default=1, help="--jobs of `rig run` (default 1)")
+    parser.add_argument("--gate-time", type=float, default=4.0, help="gate time [s] (default 4, the scene's)")
+    parser.add_argument("--dask-points", type=int, default=0, help="also run this many points on a Dask LocalCluster")
+    parser.add_argument("--dask-workers", type=int, default=2, help="workers of the LocalCluster (default 2)")
+    args = parser.parse_args()
+
+    with tempfile.TemporaryDirectory(prefix="bench_scale_scenes_") as folder:
+        warm = scene_file(Path(folder), 3, args.gate_time)
+        run_once(warm, 1)  # fills the table cache: every size below runs warm
+        print(f"default scene, gate {args.gate_time:g} s, --jobs {args.jobs}, {args.repeats} run(s) per size; "
+              "wall times on a shared machine are noisy (CPU time and load average beside them)")
+        print(f"{'points':>7} {'wall [s]':>9} {'spread':>7} {'CPU [s]':>8} {'load':>5} {'ms/point':>9} "
+              f"{'marginal':>9} {'log [B]':>11} {'raw [B/pt]':>10} {'overhead [B/pt]':>15}")
+        previous = None
+        for n in args.points:
+            scene = scene_file(Path(folder), n, args.gate_time)
+            runs = [run_once(scene, args.jobs) for _ in range(args.repeats)]
+            wall = statistics.median(r["wall"] for r in runs)
+            spread = max(r["wall"] for r in runs) - min(r["wall"] for r in runs)
+            cpu = statistics.median(r["cpu"] for r in runs)
+            size, raw = runs[0]["size"], runs[0]["raw"]
+            marginal = "" if previous is None else f"{1e3 * (wall - previous[1]) / (n - previous[0]):.2f}"
+            print(f"{n:>7} {wall:>9.2f} {spread:>7.2f} {cpu:>8.2f} {runs[0]['load']:>5.2f} {1e3 * wall / n:>9.2f} "
+                  f"{marginal:>9} {size:>11} {raw / n:>10.0f} {(size - raw) / n:>15.0f}")
+            previous = (n, wall)
+            if n == 1600:
+                print(f"        budget: 1 600 points <= {BUDGET_S_1600:g} s ({'met' if wall <= BUDGET_S_1600 else 'NOT met'}), "
+                      f"overhead <= {BUDGET_OVERHEAD_B:g} B/point "
+                      f"({'met' if (size - raw) / n <= BUDGET_OVERHEAD_B else 'NOT met'})")
+        if args.dask_points:
+            scene = scene_file(Path(folder), args.dask_points, args.gate_time)
+            run = dask_run(scene, args.dask_workers)
+            print(f"Dask LocalCluster, {args.dask_workers} workers: {args.dask_points} points in {run['wall']:.1f} s = "
+                  f"{args.dask_points / run['wall']:.0f} points/s, log {run['size']} B = "
+                  f"{run['size'] / args.dask_points:.0f} B/point ({(run['size'] - run['raw']) / args.dask_points:.0f} "
+                  "B/point beyond the raw samples)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
