@@ -18,7 +18,7 @@ import os
 from collections.abc import Iterator
 from pathlib import Path
 
-from rig.errors import RigError
+from rig.errors import ParameterError, RigError
 from rig.logbook import utc_timestamp
 
 LOCK_NAME = "rig.lock"
@@ -54,7 +54,11 @@ def folder_lock(folder: Path, what: str) -> Iterator[Path]:
     folder = Path(folder)
     path = folder / LOCK_NAME
     while True:
-        fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
+        try:
+            fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
+        except OSError as error:
+            raise ParameterError("output folder", str(folder), "a folder this user can write",
+                                 hint=error.strerror or str(error)) from None
         try:
             locked = _try_lock(fd)
         except OSError as error:  # e.g. a file system without locks

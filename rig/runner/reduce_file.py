@@ -8,6 +8,7 @@ figure, when the scene asks for figures) go into the output folder, ``/reduced``
 
 from __future__ import annotations
 
+import contextlib
 from dataclasses import replace
 from pathlib import Path
 
@@ -25,14 +26,19 @@ def reduce_log_file(log_path: Path, out_dir: Path | None = None, **parse_options
     """Reduce ``log_path`` into ``out_dir`` (default: the log's folder); returns the reduction and
     the files written. ``parse_options`` go to rig.scenes.parse_scene (e.g. ``stand_class_of``)."""
     log_path = Path(log_path)
-    try:
-        with folder_lock(log_path.parent, f"rig reduce {log_path.name}"):
-            return _reduce_locked(log_path, out_dir, **parse_options)
-    except FolderLockedError as error:
-        raise FolderLockedError(f"{log_path}: the log is being written (or reduced) by another process: {error}") from None
+    with contextlib.ExitStack() as stack:
+        try:
+            stack.enter_context(folder_lock(log_path.parent, f"rig reduce {log_path.name}"))
+        except FolderLockedError as error:
+            raise FolderLockedError(f"{log_path}: the log is being written (or reduced) by another process: {error}") from None
+        except ParameterError as error:
+            if error.name != "output folder":
+                raise
+            # the log's folder takes no lock file: no run of this user can be writing there
+        return _reduce(log_path, out_dir, **parse_options)
 
 
-def _reduce_locked(log_path: Path, out_dir: Path | None, **parse_options) -> tuple[Reduction, list[Path]]:
+def _reduce(log_path: Path, out_dir: Path | None, **parse_options) -> tuple[Reduction, list[Path]]:
     metadata = read_metadata(log_path)
     if not point_indices(log_path):
         raise LogFormatError(f"{log_path}: the log holds no operating point (every point of its run failed?); "

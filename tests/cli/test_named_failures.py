@@ -208,7 +208,8 @@ def test_ctrl_c_during_a_run_is_one_line_and_keeps_the_staging_folder(tmp_path):
                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     try:
         waited = 0.0
-        while not list((out / "log.h5.parts").glob("point_*.h5")):  # interrupt while the points run
+        journal = staging_dir(out / "log.h5") / "points.journal"
+        while not (journal.exists() and journal.stat().st_size > 0):  # interrupt while the points run
             assert child.poll() is None and waited < GIVE_UP_S, child.stderr.read() if child.poll() else "slow"
             time.sleep(0.05)
             waited += 0.05
@@ -322,9 +323,10 @@ def test_a_gate_too_short_for_a_mark_says_so_not_stall(tmp_path, capsys):
     assert not table["reason"].str.contains("stall").any()
 
 
-def test_a_log_without_points_is_named(tmp_path, capsys, stand_a_log):
+def test_a_log_without_points_is_named(tmp_path, capsys):
+    """A format-1 log (one group per point) whose points were all removed."""
     log = tmp_path / "log.h5"
-    log.write_bytes(stand_a_log.read_bytes())
+    log.write_bytes((Path(__file__).resolve().parents[1] / "logbook" / "data" / "old_layout_v1.h5").read_bytes())
     with h5py.File(log, "r+") as handle:
         for group in (L.POINTS_GROUP, L.TRUTH_GROUP):
             for name in list(handle[group]):

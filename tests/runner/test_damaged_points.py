@@ -1,8 +1,11 @@
 """Old-layout logs are reduced unchanged; a damaged point is NaN with its reason, the others as before.
 
 Data: tests/logbook/data/old_layout_v1.h5, a 4-point stand-A log written by the code before
-format version 2 (commit aafa9bc) from old_layout_v1.toml, and the reduced.csv that code wrote
-from it. A columnar log of the same scene is made by running the scene again.
+format version 2 (commit aafa9bc) from old_layout_v1.toml, and its reduced.csv as the current
+reduction gives it (regenerate with ``rig reduce`` on a copy of the log when the contact law
+changes: FASTSIM's three flexibilities moved its values by <= 2e-5). A columnar log of the same
+scene is made by running the scene again; it is simulated with today's contact law, so its
+values agree with the old log's to the size of that change, not to the last digit.
 """
 
 from __future__ import annotations
@@ -51,7 +54,9 @@ def test_old_layout_log_is_reduced_unchanged(old_log):
 
 
 def test_new_layout_gives_the_old_layout_values(new_run):
-    assert (new_run / "reduced.csv").read_text() == OLD_CSV.read_text()
+    new, old = (pd.read_csv(path, index_col="point") for path in (new_run / "reduced.csv", OLD_CSV))
+    assert list(new.columns) == list(old.columns) and list(new.index) == list(old.index)
+    pd.testing.assert_frame_equal(new, old, check_dtype=False, rtol=1e-3, atol=1e-8)
     with h5py.File(new_run / "log.h5", "r") as f:
         assert f.attrs["format_version"] == 2 and f["points/index"][:].tolist() == [0, 1, 2, 3]
 
@@ -64,8 +69,8 @@ def _reduce_damaged(log: Path, damage, capsys) -> pd.DataFrame:
     return pd.read_csv(log.parent / "reduced.csv", index_col="point")
 
 
-def _check_only_point_2_lost(table: pd.DataFrame, *reason_parts: str) -> None:
-    good = pd.read_csv(OLD_CSV, index_col="point")
+def _check_only_point_2_lost(table: pd.DataFrame, *reason_parts: str, good_csv: Path = OLD_CSV) -> None:
+    good = pd.read_csv(good_csv, index_col="point")
     assert list(table.index) == [0, 1, 2, 3]
     pd.testing.assert_frame_equal(table.drop(index=2), good.drop(index=2), check_dtype=False)  # reason: empty
     numbers = table.drop(columns="reason").loc[2]
@@ -92,7 +97,8 @@ def test_nan_sample_in_one_point_of_a_columnar_log(new_run, tmp_path, capsys):
     log = tmp_path / "log.h5"
     shutil.copyfile(new_run / "log.h5", log)
     table = _reduce_damaged(log, _nan_sample_v2, capsys)
-    _check_only_point_2_lost(table, f"/points/channels/{CHANNEL}/samples", "point 2: sample 17", "nan")
+    _check_only_point_2_lost(table, f"/points/channels/{CHANNEL}/samples", "point 2: sample 17", "nan",
+                             good_csv=new_run / "reduced.csv")
 
 
 def test_point_missing_a_dataset(old_log, new_run, tmp_path, capsys):
@@ -104,4 +110,4 @@ def test_point_missing_a_dataset(old_log, new_run, tmp_path, capsys):
     def drop_t2_of_point_2(f):  # in the columnar layout an absent value is NaN in its row
         f["points/readings/T2"][2] = np.nan
     table = _reduce_damaged(log, drop_t2_of_point_2, capsys)
-    _check_only_point_2_lost(table, "'T2' is missing")
+    _check_only_point_2_lost(table, "'T2' is missing", good_csv=new_run / "reduced.csv")
