@@ -14,7 +14,7 @@ import sys
 from rig import __version__
 from rig.errors import RigError
 
-SUBCOMMANDS = ("run", "scenes", "reduce", "compare", "accuracy")
+SUBCOMMANDS = ("run", "scenes", "reduce", "compare", "accuracy", "fit")
 
 
 def build_parser() -> argparse.ArgumentParser:
