@@ -122,7 +122,7 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
     intervals = []
     for i, p in enumerate(free):
         if profile:
-            interval = _profile_interval(predict, obs.y, u_eff, res.x, lo, hi, i, chi2, label)
+            interval = _profile_interval(predict, obs.y, u_eff, res.x, lo, hi, i, chi2, label, u[i])
         else:
             interval = (max(lo[i], res.x[i] - 1.96 * u[i]), min(hi[i], res.x[i] + 1.96 * u[i]), False, False)
         intervals.append(interval)
@@ -203,8 +203,11 @@ def _profile_chi2(predict, y, u, x_best, lo, hi, i, value, label) -> float:
     return float(np.sum(res.fun**2))
 
 
-def _profile_interval(predict, y, u, x_best, lo, hi, i, chi2_min, label):
-    """(lo95, hi95, open_lo, open_hi): where the profile chi2 crosses chi2_min + 3.84."""
+def _profile_interval(predict, y, u, x_best, lo, hi, i, chi2_min, label, scale):
+    """(lo95, hi95, open_lo, open_hi): where the profile chi2 crosses chi2_min + 3.84.
+
+    scale: the parameter's standard uncertainty; the crossings are found to 1e-3 of it.
+    """
     target = chi2_min + DELTA_CHI2_95
 
     def excess(value):
@@ -215,5 +218,9 @@ def _profile_interval(predict, y, u, x_best, lo, hi, i, chi2_min, label):
         if bound == x_best[i] or excess(bound) < 0:
             ends.append((bound, True))
             continue
-        ends.append((brentq(excess, *sorted((x_best[i], bound)), xtol=1e-4 * (hi[i] - lo[i])), False))
+        ends.append((brentq(excess, *sorted((x_best[i], bound)), xtol=_xtol(scale, hi[i] - lo[i])), False))
     return ends[0][0], ends[1][0], ends[0][1], ends[1][1]
+
+
+def _xtol(scale: float, span: float) -> float:
+    return 1e-4 * span if not np.isfinite(scale) or scale <= 0 else min(1e-4 * span, 1e-3 * scale)

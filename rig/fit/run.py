@@ -36,7 +36,7 @@ class FitReport:
 
 
 def load_data(data: str | Path, *, sidecar=None, sigma=None, scene=None, n: int | None = None,
-              effects: Mapping[str, float] | None = None) -> Observations:
+              effects: Mapping[str, float] | None = None, datasets: Sequence[str] | None = None) -> Observations:
     """Observations from a digitised curve (with sidecar and sigma) or a stand-A log / reduced.csv."""
     path = Path(data)
     if not path.is_file():
@@ -44,7 +44,8 @@ def load_data(data: str | Path, *, sidecar=None, sigma=None, scene=None, n: int 
     if is_digitised(path, sidecar):
         if scene is not None:
             raise ParameterError("scene", str(scene), "none for a digitised curve (its sidecar states the conditions)")
-        return load_digitised(path, sidecar, sigma, n=16 if n is None else n, effects=effects)
+        return load_digitised(path, sidecar, sigma, n=16 if n is None else n, effects=effects,
+                              datasets=None if datasets is None else list(datasets))
     if sigma is not None:
         raise ParameterError("sigma", sigma, "none for a stand run (u comes from the instruments in the log)")
     if scene is not None and not hasattr(scene, "build_stand"):
@@ -59,11 +60,13 @@ def load_data(data: str | Path, *, sidecar=None, sigma=None, scene=None, n: int 
 
 def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=None, scene=None,
              effects: Mapping[str, float] | None = None, start: Mapping[str, float] | None = None,
-             n: int | None = None, profile: bool = True, polish: str = "auto") -> FitReport:
+             n: int | None = None, profile: bool = True, polish: str = "auto",
+             datasets: Sequence[str] | None = None) -> FitReport:
     """Fit ``params`` (e.g. ["mu", "psi"]) to DATA; other parameters stay fixed (scene or ``effects``).
 
     sigma: u of digitised y (number or "name=value,..."); start: start values (default: each
-    parameter's own); n: contact grid (default: the scene's, 16 for a digitised curve).
+    parameter's own); n: contact grid (default: the scene's, 16 for a digitised curve);
+    datasets: the digitised datasets to fit (default all).
     """
     t0 = time.perf_counter()
     free = P.parse_names(params)
@@ -73,7 +76,7 @@ def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=Non
         raise ParameterError(f"effects.{clash[0]}", fixed_effects[clash[0]], "not also a free parameter")
     starts = {p.name: p.start for p in free}
     starts.update(P.check_values(start or {}, "start value of "))
-    obs = load_data(data, sidecar=sidecar, sigma=sigma, scene=scene, n=n, effects=fixed_effects)
+    obs = load_data(data, sidecar=sidecar, sigma=sigma, scene=scene, n=n, effects=fixed_effects, datasets=datasets)
     if obs.size <= len(free):
         raise ParameterError("data points", obs.size, f"> {len(free)} (the number of free parameters)")
     fixed = {}
