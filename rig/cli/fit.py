@@ -44,8 +44,9 @@ def add_parser(subparsers: argparse._SubParsersAction) -> argparse.ArgumentParse
     parser.add_argument("--sigma", default=None, help="u of a digitised y: VALUE or DATASET=VALUE,...")
     parser.add_argument("--sidecar", type=Path, default=None, help="TOML sidecar (default: DATA.toml)")
     parser.add_argument("--n", type=int, default=None, help="contact grid cells across 2a (default: scene's, 16)")
-    parser.add_argument("--polish", choices=("auto", "never", "always"), default="auto",
-                        help="direct-solve refit at the optimum (auto: when the table error is not small vs u)")
+    parser.add_argument("--polish", choices=("auto", "check", "never", "always"), default="auto",
+                        help="direct solves at the optimum: auto (refit when the table error is not small vs u; "
+                        "check only for a stand run), check, never, always")
     parser.add_argument("-o", "--output", type=Path, default=Path("out/fit"), metavar="DIR", help="output folder")
     parser.add_argument("--no-plot", action="store_true", help="do not draw fit.png")
     parser.set_defaults(handler=main)

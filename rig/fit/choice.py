@@ -18,7 +18,7 @@ import numpy as np
 from scipy.stats import chi2 as chi2_dist
 
 from rig.fit.data import Observations
-from rig.fit.engine import FitResult, fit
+from rig.fit.engine import FitResult, Weights, effective_u, fit
 from rig.fit.forward import ForwardModel
 from rig.fit.parameters import FitParameter
 
@@ -48,21 +48,36 @@ def set_label(params: Sequence[FitParameter]) -> str:
 
 
 def rank_models(obs: Observations, free: Sequence[FitParameter], fixed: Mapping[str, float],
-                start: Mapping[str, float], *, profile: bool = True, polish: str = "auto") -> list[RankedModel]:
-    """Fit every nested set (profile intervals for the full set only) and rank them by AIC."""
+                start: Mapping[str, float], *, profile: bool = True, polish: str = "auto",
+                scatter: float | None = 0.0) -> list[RankedModel]:
+    """Fit every nested set (profile intervals for the full set only) and rank them by AIC.
+
+    scatter: extra independent scatter (engine.fit); None estimates it on the full set, and the
+    smaller sets are fitted with that same value, so that their chi2 are comparable.
+    """
     results = []
     sets = nested_sets(free)
     memo: dict = {}
+    if scatter is None:
+        full = ForwardModel(obs, sets[-1], fixed, memo)
+        scatter = fit(full, [start[p.name] for p in sets[-1]], profile=False, polish="never",
+                      label=set_label(sets[-1]), scatter=None).scatter
     for params in sets:
         held = dict(fixed)
         held.update({p.name: p.off for p in free if p not in params})
         model = ForwardModel(obs, params, held, memo)
-        if params:
-            result = fit(model, [start[p.name] for p in params], profile=profile and params == sets[-1], polish=polish,
-                         label=set_label(params))
-        else:
-            result = _nothing_free(model)
-        results.append((set_label(params), result, params))
+        if not params:
+            results.append((set_label(params), _nothing_free(model, scatter), params))
+            continue
+        label = set_label(params)
+        first = [start[p.name] for p in params]
+        if results and results[-1][1].k == len(params) - 1:  # also start from the smaller set's optimum
+            nested = [e.value for e in results[-1][1].estimates] + [params[-1].off]
+            trials = [fit(model, x, profile=False, polish="never", label=label, scatter=scatter) for x in (first, nested)]
+            first = [e.value for e in min(trials, key=lambda r: r.chi2).estimates]
+        result = fit(model, first, profile=profile and params == sets[-1], polish=polish, label=label,
+                     scatter=scatter)
+        results.append((label, result, params))
     order = np.argsort([r.aic for _, r, _ in results], kind="stable")
     ranks = np.empty(len(results), dtype=int)
     ranks[order] = np.arange(1, len(results) + 1)
@@ -79,10 +94,11 @@ def rank_models(obs: Observations, free: Sequence[FitParameter], fixed: Mapping[
     return out
 
 
-def _nothing_free(model: ForwardModel) -> FitResult:
+def _nothing_free(model: ForwardModel, scatter: float) -> FitResult:
     obs = model.obs
     prediction = model.predict(np.empty(0))
-    chi2 = float(np.sum(((obs.y - prediction) / obs.u) ** 2))
+    u_eff = effective_u(model, np.empty(0), scatter)
+    chi2 = float(np.sum(Weights(u_eff, obs.common_cov)(obs.y - prediction) ** 2))
     return FitResult(names=(), estimates=(), correlation=np.zeros((0, 0)), chi2=chi2, n_points=obs.size,
-                     prediction=prediction, band=np.zeros(obs.size), u_eff=obs.u.copy(), warnings=(),
-                     evaluations=1, message="no free parameter")
+                     prediction=prediction, band=np.zeros(obs.size), u_eff=u_eff, warnings=(),
+                     evaluations=1, message="no free parameter", scatter=scatter)

@@ -48,7 +48,9 @@ class Observations:
     y, u: value and standard uncertainty [1]; x: the plotted abscissa (x_label names it);
     l, c: rolling point [units of a]; u_l: its standard uncertainty (0 when exact);
     alpha: alpha' [1] where fixed by the data, NaN where alpha' = mu alpha_per_mu;
-    b_over_a [1]; series: label of each point's curve; stand: the Stand when the data is a run.
+    b_over_a [1]; series: label of each point's curve; stand: the Stand when the data is a run;
+    common_cov: (N, N) covariance of errors shared by all points (the dynamometer's calibration
+    sensitivity and offset, one calibration per run), already inside u; None when there is none.
     """
 
     quantity: np.ndarray
@@ -69,6 +71,7 @@ class Observations:
     stand: object | None = None
     geometry: object | None = None
     notes: tuple[str, ...] = field(default_factory=tuple)
+    common_cov: np.ndarray | None = None
 
     @property
     def size(self) -> int:
@@ -194,7 +197,7 @@ def load_stand_a_run(path: str | Path, scene=None, *, n: int | None = None) -> O
     in l/a or F_y (with a reason) are left out and counted in ``notes``; NaN anywhere else in
     a used column is an error.
     """
-    from rig.logbook.reader import read_metadata, read_settings
+    from rig.logbook.reader import read_calibration, read_metadata, read_settings
     from rig.logbook.reduced import read_reduced
     from rig.scenes.load import parse_scene
 
@@ -239,6 +242,8 @@ def load_stand_a_run(path: str | Path, scene=None, *, n: int | None = None) -> O
     if np.any(u <= 0):
         raise ParameterError("u_F_y_N", float(u.min() * f_n[np.argmin(u)]), "> 0 N for every point fitted")
     notes = [f"{dropped} point(s) without l/a or F_y (reduction's reason) left out"] if dropped else []
+    common, note = _calibration_covariance(read_calibration(log).loc[rows], y, f_n, geometries)
+    notes.append(note)
     return Observations(
         quantity=np.full(y.size, "F_y_per_F_N"), y=y, u=u,
         x=_finite("l_over_a", table["l_over_a"].to_numpy(), rows), x_label="l/a",
@@ -248,8 +253,32 @@ def load_stand_a_run(path: str | Path, scene=None, *, n: int | None = None) -> O
         series=np.array([f"F_N = {f:g} N" for f in f_n]),
         contact=ContactCondition(spec.model, "line", spec.poisson, spec.n if n is None else n),
         fixed_effects=dict(spec.effects), source=f"{path} (stand A, scene {scene.name})",
-        stand=stand, geometry=geometries, notes=tuple(notes),
+        stand=stand, geometry=geometries, notes=tuple(notes), common_cov=common,
     )
+
+
+CAL = "dynamometer_10_"
+
+
+def _calibration_covariance(cal: pd.DataFrame, y: np.ndarray, f_n: np.ndarray, geometries) -> tuple:
+    """Covariance of y = F_y/F_N shared by all points through the dynamometer's one calibration.
+
+    F_y = (s - s0)/S (lever_dyn/R_v) (eq. 33): dy/dS = -y/S, dy/ds0 = -(lever_dyn/R_v)/(S F_N);
+    cov = a a^T u_S^2 + b b^T u_s0^2 + (a b^T + b a^T) cov(S, s0) with the record's u and cov.
+    """
+    columns = ["sensitivity_V_N", "u_sensitivity_V_N", "u_offset_V", "cov_sensitivity_offset_V2_N"]
+    if any(CAL + c not in cal.columns for c in columns):
+        return None, "no dynamometer calibration record in the log: errors treated as independent"
+    values = cal[[CAL + c for c in columns]].to_numpy(dtype=float)
+    if not np.allclose(values, values[0], rtol=0, atol=0):
+        return None, "dynamometer calibrated more than once: calibration errors treated as independent"
+    sens, u_sens, u_off, cov_so = values[0]
+    lever = np.array([g.dynamometer_lever / g.yoke_lever for g in geometries])
+    a = -y / sens
+    b = -lever / (sens * f_n)
+    common = np.outer(a, a) * u_sens**2 + np.outer(b, b) * u_off**2 + (np.outer(a, b) + np.outer(b, a)) * cov_so
+    return common, (f"dynamometer calibration common to all points (u(S)/S = {u_sens / sens:.2%}, u(s0) = "
+                    f"{u_off:.3g} V): generalised least squares with its covariance")
 
 
 def is_digitised(path: str | Path, sidecar: str | Path | None) -> bool:

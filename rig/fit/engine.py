@@ -1,9 +1,11 @@
 """Weighted least squares with effective variance, profile-likelihood intervals, correlations.
 
-chi2(theta) = sum ((y - f(theta))/u_eff)^2 with u_eff^2 = u^2 + (df/dl u_l)^2 (Orear's effective
-variance: the rolling point l/a is itself measured; df/dl from the model at the start and again
-at the first optimum, then held while the fit is repeated). The minimiser is
-scipy.optimize.least_squares (trust-region reflective, bounds = the parameters' ranges).
+chi2(theta) = r^T V^-1 r, r = y - f(theta), V = diag(u_eff^2 - diag C) + C: u_eff^2 = u^2 +
+(df/dl u_l)^2 (Orear's effective variance: the rolling point l/a is itself measured; df/dl from
+the model at the start and again at the first optimum, then held while the fit is repeated) and
+C the covariance of errors common to all points (a calibration, Observations.common_cov; its
+diagonal is already inside u). The residuals are whitened with the Cholesky factor of V and
+minimised with scipy.optimize.least_squares (trust-region reflective, bounds = the ranges).
 
 95 % interval of a parameter: the values where the profile chi2 (minimised over the others)
 rises 3.84 (chi2 with 1 degree of freedom) above the minimum; an end that does not rise that far
@@ -16,9 +18,10 @@ gives chi2/dof so that a poor fit is visible).
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
+from scipy.linalg import solve_triangular
 from scipy.optimize import brentq, least_squares
 
 from rig.errors import ConvergenceError, ParameterError
@@ -64,7 +67,7 @@ class FitResult:
     message: str
     table_error: float = float("nan")
     polished: bool = False
-    extra: dict = field(default_factory=dict)
+    scatter: float = 0.0
 
     @property
     def k(self) -> int:
@@ -87,11 +90,14 @@ class FitResult:
 
 
 def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, polish: str = "auto",
-        polish_ratio: float = 0.2, label: str = "") -> FitResult:
+        polish_ratio: float = 0.2, label: str = "", scatter: float | None = 0.0) -> FitResult:
     """Fit ``model`` to its observations from ``start``; see the module docstring.
 
-    polish: "auto" (direct-solve refit when max |table - direct| at the optimum exceeds
-    polish_ratio * min u), "never" or "always".
+    polish: "auto" (direct-solve refit of the estimate when max |table - direct| at the
+    optimum exceeds polish_ratio * min u; the table's profile intervals and covariance are then
+    moved to the polished estimate), "check" (report table - direct, never refit), "never" or
+    "always". scatter: independent scatter s added to every
+    point's u (u_eff^2 += s^2) [units of y]; None estimates it (see estimate_scatter).
     """
     obs = model.obs
     free = model.free
@@ -101,28 +107,38 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
     hi = np.array([p.hi for p in free])
     x0 = np.array([p.check(v, "start value of ") for p, v in zip(free, start)])
     x0 = np.clip(x0, lo + 1e-9 * (hi - lo), hi - 1e-9 * (hi - lo))
-    u_eff = _effective_u(model, x0)
-    res = _minimise(model.predict, obs.y, u_eff, x0, lo, hi, label)
-    u_eff = _effective_u(model, res.x)
-    res = _minimise(model.predict, obs.y, u_eff, res.x, lo, hi, label)
+    common = obs.common_cov
+    s = 0.0 if scatter is None else float(scatter)
+    weights = Weights(effective_u(model, x0, s), common)
+    res = _minimise(model.predict, obs.y, weights, x0, lo, hi, label)
+    for _ in range(3 if scatter is None else 1):
+        if scatter is None:
+            s = estimate_scatter(model, res.x, obs.size - len(free))
+        weights = Weights(effective_u(model, res.x, s), common)
+        res = _minimise(model.predict, obs.y, weights, res.x, lo, hi, label)
     predict = model.predict
+    chi2 = float(np.sum(res.fun**2))
+    slopes = _slopes(predict, res.x, lo, hi)
+    jac = np.column_stack([-weights(column) for column in slopes.T]) if slopes.size else slopes
+    cov, corr = _covariance(jac)
+    u = np.sqrt(np.clip(np.diag(cov), 0.0, None))
+    x_table = res.x
     table_error = float("nan")
     polished = False
     if polish != "never":
         table_error = float(np.max(np.abs(model.direct(res.x) - model.predict(res.x))))
-        if polish == "always" or table_error > polish_ratio * float(np.min(obs.u)):
-            predict = model.direct
-            res = _minimise(predict, obs.y, u_eff, res.x, lo, hi, label, max_nfev=20 * (len(free) + 1))
+        if polish == "always" or (polish == "auto" and table_error > polish_ratio * float(np.min(obs.u))):
+            res = _minimise(model.direct, obs.y, weights, res.x, lo, hi, label, max_nfev=20 * (len(free) + 1))
+            chi2 = float(np.sum(res.fun**2))
             polished = True
-    chi2 = float(np.sum(res.fun**2))
-    jac = _jacobian(predict, res.x, u_eff, lo, hi)
-    cov, corr = _covariance(jac)
-    u = np.sqrt(np.clip(np.diag(cov), 0.0, None))
     warnings = []
     intervals = []
     for i, p in enumerate(free):
         if profile:
-            interval = _profile_interval(predict, obs.y, u_eff, res.x, lo, hi, i, chi2, label, u[i])
+            interval = _profile_interval(predict, obs.y, weights, x_table, lo, hi, i, float(np.sum(
+                weights(obs.y - predict(x_table)) ** 2)), label, u[i])
+            shift = res.x[i] - x_table[i]  # polished: the table's profile moved to the direct optimum
+            interval = (max(lo[i], interval[0] + shift), min(hi[i], interval[1] + shift), *interval[2:])
         else:
             interval = (max(lo[i], res.x[i] - 1.96 * u[i]), min(hi[i], res.x[i] + 1.96 * u[i]), False, False)
         intervals.append(interval)
@@ -138,29 +154,71 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
                           bool(intervals[i][2]), bool(intervals[i][3]))
         for i, p in enumerate(free)
     )
-    band = np.sqrt(np.clip(np.einsum("ij,jk,ik->i", jac * u_eff[:, None], cov, jac * u_eff[:, None]), 0, None))
+    band = np.sqrt(np.clip(np.einsum("ij,jk,ik->i", slopes, cov, slopes), 0, None))
+    u_total = weights.u_eff if common is None else np.sqrt(np.maximum(weights.u_eff**2, np.diag(common)))
     return FitResult(
         names=tuple(p.name for p in free), estimates=estimates, correlation=corr, chi2=chi2, n_points=obs.size,
-        prediction=predict(res.x), band=band, u_eff=u_eff, warnings=tuple(warnings),
+        prediction=(model.direct if polished else predict)(res.x), band=band, u_eff=u_total, warnings=tuple(warnings),
         evaluations=model.evaluations, message=str(res.message), table_error=table_error, polished=polished,
+        scatter=s,
     )
 
 
-def _effective_u(model: ForwardModel, theta: np.ndarray) -> np.ndarray:
+class Weights:
+    """Whitening of residuals: L^-1 r with V = L L^T (diagonal when there is no common covariance)."""
+
+    def __init__(self, u_eff: np.ndarray, common: np.ndarray | None) -> None:
+        self.u_eff = u_eff
+        if common is None:
+            self.factor = None
+        else:
+            v = common.copy()
+            v[np.diag_indices_from(v)] = np.maximum(u_eff**2, np.diag(common) * (1 + 1e-9))
+            self.factor = np.linalg.cholesky(v)
+
+    def __call__(self, r: np.ndarray) -> np.ndarray:
+        if self.factor is None:
+            return r / self.u_eff
+        return solve_triangular(self.factor, r, lower=True, check_finite=False)
+
+
+def effective_u(model: ForwardModel, theta: np.ndarray, scatter: float = 0.0) -> np.ndarray:
+    """sqrt(u^2 + (df/dl u_l)^2 + scatter^2) per point [units of y]."""
     obs = model.obs
     if not np.any(obs.u_l > 0):
-        return obs.u.copy()
+        return np.hypot(obs.u, scatter)
     slope = (model.predict(theta, dl=DL_STEP) - model.predict(theta, dl=-DL_STEP)) / (2 * DL_STEP)
-    return np.hypot(obs.u, slope * obs.u_l)
+    return np.sqrt(obs.u**2 + (slope * obs.u_l) ** 2 + scatter**2)
 
 
-def _minimise(predict, y, u, x0, lo, hi, label, max_nfev=None):
+def estimate_scatter(model: ForwardModel, theta: np.ndarray, dof: int) -> float:
+    """Independent scatter s [units of y] that makes chi2(theta) = dof; 0 when chi2 <= dof already.
+
+    For run data whose stated u misses an independent part (e.g. the dynamometer's noise and
+    drift when u is all calibration): the usual Birge-type estimate, applied to the independent
+    part only, so that the common calibration error keeps its stated size.
+    """
+    residual = model.obs.y - model.predict(theta)
+    u_eff = effective_u(model, theta)
+    common = model.obs.common_cov
+
+    def excess(log_s: float) -> float:
+        return float(np.sum(Weights(np.sqrt(u_eff**2 + np.exp(2 * log_s)), common)(residual) ** 2)) - dof
+
+    lo = np.log(1e-6 * float(np.median(u_eff)))
+    if dof <= 0 or excess(lo) <= 0:
+        return 0.0
+    hi = np.log(10.0 * float(np.max(np.abs(residual))) + 1e-300)
+    return float(np.exp(brentq(excess, lo, hi, xtol=1e-3)))
+
+
+def _minimise(predict, y, weights, x0, lo, hi, label, max_nfev=None):
     def residual(theta):
-        return (y - predict(theta)) / u
+        return weights(y - predict(theta))
 
     try:
         res = least_squares(residual, x0, bounds=(lo, hi), x_scale=hi - lo, diff_step=1e-4, max_nfev=max_nfev,
-                            xtol=1e-10, ftol=1e-10)
+                            xtol=1e-8, ftol=1e-8)
     except ValueError as error:
         raise FitConvergenceError(f"fit {label}: the least-squares solver stopped: {error}") from None
     if not np.all(np.isfinite(res.fun)) or (res.status <= 0 and max_nfev is None):
@@ -168,16 +226,16 @@ def _minimise(predict, y, u, x0, lo, hi, label, max_nfev=None):
     return res
 
 
-def _jacobian(predict, x, u, lo, hi) -> np.ndarray:
-    """d residual/d theta = -df/dtheta / u by central differences kept inside the bounds."""
-    jac = np.empty((u.size, x.size))
+def _slopes(predict, x, lo, hi) -> np.ndarray:
+    """df/dtheta (N, k) by central differences kept inside the bounds."""
+    columns = []
     for k in range(x.size):
         h = 1e-4 * (hi[k] - lo[k])
         xp, xm = x.copy(), x.copy()
         xp[k] = min(hi[k], x[k] + h)
         xm[k] = max(lo[k], x[k] - h)
-        jac[:, k] = -(predict(xp) - predict(xm)) / (xp[k] - xm[k]) / u
-    return jac
+        columns.append((predict(xp) - predict(xm)) / (xp[k] - xm[k]))
+    return np.column_stack(columns) if columns else np.zeros((0, 0))
 
 
 def _covariance(jac: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -188,7 +246,7 @@ def _covariance(jac: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return cov, np.clip(corr, -1.0, 1.0)
 
 
-def _profile_chi2(predict, y, u, x_best, lo, hi, i, value, label) -> float:
+def _profile_chi2(predict, y, weights, x_best, lo, hi, i, value, label) -> float:
     others = [k for k in range(x_best.size) if k != i]
 
     def full(sub):
@@ -198,12 +256,12 @@ def _profile_chi2(predict, y, u, x_best, lo, hi, i, value, label) -> float:
         return theta
 
     if not others:
-        return float(np.sum(((y - predict(full(np.empty(0)))) / u) ** 2))
-    res = _minimise(lambda sub: predict(full(sub)), y, u, x_best[others], lo[others], hi[others], label)
+        return float(np.sum(weights(y - predict(full(np.empty(0)))) ** 2))
+    res = _minimise(lambda sub: predict(full(sub)), y, weights, x_best[others], lo[others], hi[others], label)
     return float(np.sum(res.fun**2))
 
 
-def _profile_interval(predict, y, u, x_best, lo, hi, i, chi2_min, label, scale):
+def _profile_interval(predict, y, weights, x_best, lo, hi, i, chi2_min, label, scale):
     """(lo95, hi95, open_lo, open_hi): where the profile chi2 crosses chi2_min + 3.84.
 
     scale: the parameter's standard uncertainty; the crossings are found to 1e-3 of it.
@@ -211,7 +269,7 @@ def _profile_interval(predict, y, u, x_best, lo, hi, i, chi2_min, label, scale):
     target = chi2_min + DELTA_CHI2_95
 
     def excess(value):
-        return _profile_chi2(predict, y, u, x_best, lo, hi, i, value, label) - target
+        return _profile_chi2(predict, y, weights, x_best, lo, hi, i, value, label) - target
 
     ends = []
     for bound in (lo[i], hi[i]):

@@ -1,7 +1,7 @@
 """The forward model of a fit: predicted y at every data point for given parameter values.
 
 Cost (docs/fit.md): the contact coefficients (nu_T, nu_v, nu_0) are evaluated at *nodes* of the
-free effect parameters (5 per parameter, cubic interpolation between them) and
+free effect parameters (5 per parameter, not-a-knot cubic spline between them) and
 * for stand data (alpha' = mu K depends on mu) from the stand's own cached surrogate tables
   (rig.contact.surrogate over l/a, c/a, log alpha'; one table per b/a and node, built once and
   then loaded from the cache), so a model evaluation costs milliseconds;
@@ -18,7 +18,7 @@ import itertools
 from collections.abc import Mapping, Sequence
 
 import numpy as np
-from scipy.interpolate import RegularGridInterpolator
+from scipy.interpolate import CubicSpline
 
 from rig.contact.solve import solve
 from rig.fit.data import Observations
@@ -94,9 +94,9 @@ class ForwardModel:
             grid.append(self._node_values(self._effects(node), mu, dl))
         shape = tuple(len(n) for n in self.nodes)
         table = np.stack(grid).reshape(shape + grid[0].shape)
-        point = [values[p.name] for p in self.effects_free]
-        interp = RegularGridInterpolator(self.nodes, table, method="cubic")
-        return interp(point)[0]
+        for p, nodes in zip(self.effects_free, self.nodes):  # tensor product: one axis at a time
+            table = CubicSpline(nodes, table, axis=0)(values[p.name])
+        return table
 
     def _node_values(self, effects: dict[str, float], mu: float, dl: float) -> np.ndarray:
         """(N, 3) nu_T, nu_v, nu_0 at the points for these effects (and mu when alpha' needs it)."""

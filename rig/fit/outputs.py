@@ -49,10 +49,15 @@ def summary_text(report: FitReport) -> str:
              f"contact:     {obs.contact.model}, {obs.contact.shape}, n = {obs.contact.n}, poisson "
              f"{obs.contact.poisson:g}, fixed effects {dict(obs.fixed_effects) or 'none'}"]
     lines += [f"note:        {n}" for n in obs.notes]
-    how = "direct solves (table error not small against u: polished)" if full.polished else (
-        "node/table interpolation (direct-solve check at the optimum")
-    if not full.polished:
-        how += f": max |table - direct| = {full.table_error:.2g} vs min u = {np.min(obs.u):.2g})"
+    how = "direct-solve polish of the estimate (table error not small against u)" if full.polished else (
+        "node/table interpolation")
+    how += (f"; at the optimum max |table - direct| = {full.table_error:.2g} vs min u = {np.min(obs.u):.2g}"
+            if np.isfinite(full.table_error) else "; no direct-solve check")
+    if obs.stand is not None:
+        how += " (the stand's own cached tables: the law its simulation uses)"
+    if full.scatter > 0:
+        how += (f"\nscatter:     independent scatter s = {full.scatter:.3g} added to u (the stated u is all "
+                "calibration; s makes chi2/dof = 1 for the full set, held for the others)")
     lines.append(f"evaluated:   {how}")
     lines.append(f"chi2:        {full.chi2:.4g} for {full.dof} degrees of freedom (chi2/dof {full.chi2 / max(full.dof, 1):.3g})")
     lines.append("parameters (95 % intervals from the profile likelihood, Delta chi2 = 3.84):")

@@ -77,10 +77,17 @@ def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=Non
     starts = {p.name: p.start for p in free}
     starts.update(P.check_values(start or {}, "start value of "))
     obs = load_data(data, sidecar=sidecar, sigma=sigma, scene=scene, n=n, effects=fixed_effects, datasets=datasets)
+    free_names = {p.name for p in free}
+    if free_names & set(obs.fixed_effects):  # a free parameter is not also fixed by the scene
+        obs = Observations(**{**obs.__dict__, "fixed_effects": {
+            k: v for k, v in obs.fixed_effects.items() if k not in free_names}})
     if obs.size <= len(free):
         raise ParameterError("data points", obs.size, f"> {len(free)} (the number of free parameters)")
     fixed = {}
     if not any(p.name == "mu" for p in free) and obs.mu_dependent:
         fixed["mu"] = obs.stand.params.mu
-    models = rank_models(obs, free, fixed, starts, profile=profile, polish=polish)
+    scatter = None if obs.common_cov is not None else 0.0  # run data: u states the calibration only
+    if obs.stand is not None and polish == "auto":
+        polish = "check"  # the stand's table is the law the twin simulates with: direct solves are not closer
+    models = rank_models(obs, free, fixed, starts, profile=profile, polish=polish, scatter=scatter)
     return FitReport(obs, free, fixed, models, time.perf_counter() - t0)

@@ -15,7 +15,7 @@ class LinearModel:
     def __init__(self, basis: np.ndarray, y: np.ndarray, u: np.ndarray, names=("a", "b")) -> None:
         self.basis = basis
         self.free = tuple(FitParameter(n, "1", -10.0, 10.0, 0.0, None, "test") for n in names)
-        self.obs = type("Obs", (), dict(y=y, u=u, u_l=np.zeros(y.size), size=y.size))()
+        self.obs = type("Obs", (), dict(y=y, u=u, u_l=np.zeros(y.size), size=y.size, common_cov=None))()
         self.evaluations = 0
 
     def predict(self, theta, dl=0.0):
