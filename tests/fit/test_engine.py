@@ -66,3 +66,27 @@ def test_nearly_collinear_parameters_are_flagged():
     result = fit(LinearModel(basis, y, u), [0.0, 0.0], polish="never")
     assert abs(result.correlation[0, 1]) > 0.95
     assert any("not separately identifiable" in w for w in result.warnings)
+
+
+def test_common_covariance_gives_closed_form_generalised_least_squares():
+    basis, y, u = _data(5)
+    common = 0.5 * np.outer(u, u)  # a fully correlated part (a calibration), inside the stated u
+    model = LinearModel(basis, y, u)
+    model.obs.common_cov = common
+    v = common + np.diag(u**2 - np.diag(common))
+    vinv = np.linalg.inv(v)
+    cov = np.linalg.inv(basis.T @ vinv @ basis)
+    theta = cov @ basis.T @ vinv @ y
+    result = fit(model, [0.0, 0.0], polish="never")
+    for k, e in enumerate(result.estimates):
+        assert e.value == pytest.approx(theta[k], abs=1e-7)
+        assert e.u == pytest.approx(np.sqrt(cov[k, k]), rel=1e-5)
+    r = y - basis @ theta
+    assert result.chi2 == pytest.approx(r @ vinv @ r, rel=1e-8)
+
+
+def test_estimated_scatter_makes_chi2_equal_the_degrees_of_freedom():
+    basis, y, u = _data(6)
+    result = fit(LinearModel(basis, y, u / 5.0), [0.0, 0.0], polish="never", scatter=None)
+    assert result.scatter > 0
+    assert result.chi2 == pytest.approx(y.size - 2, rel=1e-2)
