@@ -25,7 +25,6 @@ from rig import validate
 from rig.errors import ParameterError
 
 CONTACT_QUANTITIES = ("nu_T", "nu_v", "nu_0")
-STAND_QUANTITIES = ("F_y_per_F_N",)
 X_COLUMNS = ("alpha", "l_over_a", "c_over_a")
 DEFAULT_N = 16
 

@@ -10,7 +10,6 @@ import pandas as pd
 from rig.fit.run import FitReport
 from rig.logbook import atomic
 
-FILES = ("fit.csv", "models.csv", "fit.png", "summary.txt")
 
 
 def _write(path: Path, write) -> None:
