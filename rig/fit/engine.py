@@ -96,8 +96,8 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
     polish: "auto" (direct-solve refit of the estimate when max |table - direct| at the
     optimum exceeds polish_ratio * min u; the table's profile intervals and covariance are then
     moved to the polished estimate), "check" (report table - direct, never refit), "never" or
-    "always". scatter: independent scatter s added to every
-    point's u (u_eff^2 += s^2) [units of y]; None estimates it (see estimate_scatter).
+    "always". scatter: independent scatter s added to every point's u (u_eff^2 += s^2)
+    [units of y]; None estimates it (see estimate_scatter).
     """
     obs = model.obs
     free = model.free
@@ -122,7 +122,7 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
     jac = np.column_stack([-weights(column) for column in slopes.T]) if slopes.size else slopes
     cov, corr = _covariance(jac)
     u = np.sqrt(np.clip(np.diag(cov), 0.0, None))
-    x_table = res.x
+    x_table, chi2_table = res.x, chi2
     table_error = float("nan")
     polished = False
     if polish != "never":
@@ -135,8 +135,7 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
     intervals = []
     for i, p in enumerate(free):
         if profile:
-            interval = _profile_interval(predict, obs.y, weights, x_table, lo, hi, i, float(np.sum(
-                weights(obs.y - predict(x_table)) ** 2)), label, u[i])
+            interval = _profile_interval(predict, obs.y, weights, x_table, lo, hi, i, chi2_table, label, u[i])
             shift = res.x[i] - x_table[i]  # polished: the table's profile moved to the direct optimum
             interval = (max(lo[i], interval[0] + shift), min(hi[i], interval[1] + shift), *interval[2:])
         else:
