@@ -54,3 +54,12 @@ def test_missing_params_is_an_argparse_error(tmp_path):
         assert stop.code == 2
     else:
         raise AssertionError("rig fit without --params must stop")
+
+
+def test_mu_does_not_enter_a_curve_versus_alpha_and_is_flagged(tmp_path):
+    from rig.fit import fit_data
+
+    report = fit_data(_small_curve(tmp_path), ["mu"], sigma=0.01)
+    assert any("mu is not identifiable" in w for w in report.full.warnings)
+    mu = report.full.estimate("mu")
+    assert mu.open_lo and mu.open_hi
