@@ -19,7 +19,7 @@ from rig.errors import RigError
 EXIT_INTERRUPTED = 130
 """Exit status after Ctrl-C (128 + SIGINT, as shells report it)."""
 
-SUBCOMMANDS = ("run", "scenes", "reduce", "compare", "accuracy", "lab")
+SUBCOMMANDS = ("run", "scenes", "reduce", "compare", "accuracy", "lab", "fit")
 
 
 def build_parser() -> argparse.ArgumentParser:

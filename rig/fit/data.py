@@ -1,0 +1,294 @@
+"""What a fit is fitted to: points of one quantity each, with uncertainty and contact conditions.
+
+Two sources (docs/fit.md):
+* a digitised contact curve (WebPlotDigitizer CSV + TOML sidecar, as ``rig compare`` reads):
+  nu_T, nu_v or nu_0 (eqs. 26-28) versus alpha', l/a or c/a, the other conditions from the
+  sidecar; the uncertainty u of the digitised y is given by the caller (the format has none);
+* a stand-A run (``log.h5`` or its ``reduced.csv`` next to it): the measured F_y/F_N = mu nu_v
+  (eq. 28), u from the dynamometer's stated u(F_y); l/a, c/a, i_k as reduced (eqs. 29-32) and
+  alpha' = mu K with K = 10 (b/a)(v/w0)/R_x from the stand's geometry (eq. 21, line contact).
+The data is never modified; NaN in a used column is a ParameterError naming the row.
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from rig import validate
+from rig.errors import ParameterError
+
+CONTACT_QUANTITIES = ("nu_T", "nu_v", "nu_0")
+X_COLUMNS = ("alpha", "l_over_a", "c_over_a")
+DEFAULT_N = 16
+
+
+@dataclass(frozen=True)
+class ContactCondition:
+    """The contact model fixed for the fit: model, shape, Poisson ratio [1], grid n."""
+
+    model: str
+    shape: str
+    poisson: float
+    n: int
+
+
+@dataclass(frozen=True, eq=False)
+class Observations:
+    """Points to fit (arrays of one length N).
+
+    quantity: "nu_T", "nu_v", "nu_0" (contact coefficients) or "F_y_per_F_N" (= mu nu_v);
+    y, u: value and standard uncertainty [1]; x: the plotted abscissa (x_label names it);
+    l, c: rolling point [units of a]; u_l: its standard uncertainty (0 when exact);
+    alpha: alpha' [1] where fixed by the data, NaN where alpha' = mu alpha_per_mu;
+    b_over_a [1]; series: label of each point's curve; stand: the Stand when the data is a run;
+    common_cov: (N, N) covariance of errors shared by all points (the dynamometer's calibration
+    sensitivity and offset, one calibration per run), already inside u; None when there is none.
+    """
+
+    quantity: np.ndarray
+    y: np.ndarray
+    u: np.ndarray
+    x: np.ndarray
+    x_label: str
+    l: np.ndarray
+    c: np.ndarray
+    u_l: np.ndarray
+    alpha: np.ndarray
+    alpha_per_mu: np.ndarray
+    b_over_a: np.ndarray
+    series: np.ndarray
+    contact: ContactCondition
+    fixed_effects: Mapping[str, float]
+    source: str
+    stand: object | None = None
+    geometry: object | None = None
+    notes: tuple[str, ...] = field(default_factory=tuple)
+    common_cov: np.ndarray | None = None
+
+    @property
+    def size(self) -> int:
+        return int(self.y.size)
+
+    @property
+    def mu_dependent(self) -> bool:
+        """True when alpha' depends on mu (stand data): the model must be re-evaluated per mu."""
+        return bool(np.any(np.isnan(self.alpha)))
+
+
+def _finite(name: str, values: np.ndarray, rows: np.ndarray | None = None) -> np.ndarray:
+    values = np.asarray(values, dtype=float)
+    bad = np.flatnonzero(~np.isfinite(values))
+    if bad.size:
+        row = int(bad[0]) if rows is None else int(rows[bad[0]])
+        raise ParameterError(f"{name}[{row}]", values[bad[0]], "a finite number (the data has NaN or inf there)")
+    return values
+
+
+def parse_sigma(given: str | float | Mapping[str, float] | None, datasets: list[str]) -> dict[str, float]:
+    """Uncertainty per dataset from "0.01", "nu_v=0.01,nu_0=0.005", a number or a mapping."""
+    if given is None:
+        raise ParameterError("sigma", None, "the standard uncertainty of the digitised y, e.g. --sigma 0.01 "
+                             "or --sigma nu_v=0.01,nu_0=0.005 (the digitised format states none)")
+    if isinstance(given, str) and "=" not in given:
+        given = float(given) if _is_number(given) else given
+    if isinstance(given, (int, float)) and not isinstance(given, bool):
+        value = validate.number("sigma", given, 0.0, lo_open=True)
+        return {name: value for name in datasets}
+    if isinstance(given, str):
+        pairs = {}
+        for item in given.split(","):
+            key, _, value = item.partition("=")
+            pairs[key.strip()] = float(value) if _is_number(value) else value.strip()
+        given = pairs
+    validate.known_keys("dataset in sigma", given, datasets)
+    out = {name: validate.number(f"sigma.{name}", v, 0.0, lo_open=True) for name, v in given.items()}
+    missing = [name for name in datasets if name not in out]
+    if missing:
+        raise ParameterError(f"sigma.{missing[0]}", None, "a positive number for every dataset fitted")
+    return out
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def load_digitised(path: str | Path, sidecar: str | Path | None, sigma, *, model: str = "kinematic",
+                   n: int = DEFAULT_N, datasets: list[str] | None = None,
+                   effects: Mapping[str, float] | None = None) -> Observations:
+    """Observations from a digitised contact curve: every dataset (or ``datasets``) of the export.
+
+    The sidecar's conditions must give shape, b_over_a, poisson and the two of alpha, l_over_a,
+    c_over_a that are not the x axis; datasets must be nu_T, nu_v or nu_0 (magnitudes allowed).
+    """
+    from rig.compare.comparison import default_sidecar_path
+    from rig.compare.digitizer import digitised_frames, read_export
+    from rig.compare.sidecar import load_sidecar
+
+    path = Path(path)
+    sidecar_path = Path(sidecar) if sidecar is not None else default_sidecar_path(path)
+    spec = load_sidecar(sidecar_path)
+    _, curves = read_export(path)
+    frames = digitised_frames(curves, spec, str(path))
+    names = list(frames) if datasets is None else [validate.choice("dataset", d, list(frames)) for d in datasets]
+    sigmas = parse_sigma(sigma, names)
+    x_col = validate.choice(f"x axis of {sidecar_path}", spec.x.column, X_COLUMNS)
+    parts = []
+    for name in names:
+        ds = spec.dataset(name)
+        if ds.y.column not in CONTACT_QUANTITIES:
+            raise ParameterError(f"datasets.{name}", ds.y.column,
+                                 "one of " + ", ".join(CONTACT_QUANTITIES) + " for a contact-level fit")
+        cond = dict(ds.conditions)
+        frame = frames[name]
+        x = _finite(f"{name}.x", frame[x_col].to_numpy())
+        y = _finite(f"{name}.y", frame.iloc[:, 1].to_numpy())
+        cond_values = {}
+        for key in X_COLUMNS + ("b_over_a", "poisson"):
+            if key == x_col:
+                cond_values[key] = x
+            elif key in cond:
+                cond_values[key] = np.full(x.size, validate.number(f"conditions.{key}", cond[key]))
+            else:
+                raise ParameterError(f"conditions.{key}", None, f"a value in the sidecar {sidecar_path} "
+                                     "(the fit needs every contact condition)")
+        shape = cond.get("shape")
+        if not isinstance(shape, str):
+            raise ParameterError("conditions.shape", shape, f"a shape name in the sidecar {sidecar_path}")
+        parts.append((name, ds.y.column, ds.y.magnitude, x, y, sigmas[name], cond_values, shape))
+    shapes = {p[7] for p in parts}
+    poissons = {float(p[6]["poisson"][0]) for p in parts}
+    if len(shapes) != 1 or len(poissons) != 1:
+        raise ParameterError("conditions", sorted(map(str, shapes | poissons)), "one shape and one poisson per fit")
+    cat = lambda k: np.concatenate([p[6][k] for p in parts])  # noqa: E731
+    quantity = np.concatenate([np.full(p[3].size, p[1]) for p in parts])
+    return Observations(
+        quantity=quantity,
+        y=np.concatenate([p[4] for p in parts]),
+        u=np.concatenate([np.full(p[3].size, p[5]) for p in parts]),
+        x=np.concatenate([p[3] for p in parts]),
+        x_label=spec.x.label,
+        l=cat("l_over_a"), c=cat("c_over_a"), u_l=np.zeros(quantity.size),
+        alpha=_finite("alpha", cat("alpha")), alpha_per_mu=np.full(quantity.size, np.nan),
+        b_over_a=cat("b_over_a"),
+        series=np.concatenate([np.full(p[3].size, p[0]) for p in parts]),
+        contact=ContactCondition(model, shapes.pop(), poissons.pop(), validate.integer("n", n, 4, 512)),
+        fixed_effects=dict(effects or {}),
+        source=f"{path} (sidecar {sidecar_path}), u as given: {sigmas}",
+        notes=tuple(f"{p[0]} is |{p[1]}|" for p in parts if p[2]),
+    )
+
+
+def load_stand_a_run(path: str | Path, scene=None, *, n: int | None = None) -> Observations:
+    """Observations F_y/F_N versus l/a from a stand-A run: ``log.h5`` or ``reduced.csv`` beside it.
+
+    scene: a loaded scene (None: the scene stored in the log). Points whose reduction gave NaN
+    in l/a or F_y (with a reason) are left out and counted in ``notes``; NaN anywhere else in
+    a used column is an error.
+    """
+    from rig.logbook.reader import read_calibration, read_metadata, read_settings
+    from rig.logbook.reduced import read_reduced
+    from rig.scenes.load import parse_scene
+
+    path = Path(path)
+    if path.suffix == ".csv":
+        table = pd.read_csv(path)
+        log = path.with_name("log.h5")
+        if not log.is_file():
+            raise ParameterError("DATA", str(path), "a reduced.csv with its log.h5 beside it (for F_N, Delta h)")
+    elif path.suffix in (".h5", ".hdf5"):
+        log = path
+        table = read_reduced(path).reset_index()
+    else:
+        raise ParameterError("DATA", str(path), "a log.h5, a reduced.csv, or a digitised .csv with a .toml sidecar")
+    meta = read_metadata(log)
+    if scene is None:
+        scene = parse_scene(meta.scene_toml, name=f"scene of {log}", source=str(log))
+    stand = scene.build_stand()
+    if getattr(stand, "name", "") != "yoke":
+        raise ParameterError("stand", getattr(stand, "name", stand), "yoke (stand A); stand B fits are not done")
+    settings = read_settings(log)
+    for column in ("point", "l_over_a", "u_l_over_a", "c_over_a", "F_y_N", "u_F_y_N", "i_k"):
+        if column not in table.columns:
+            raise ParameterError("DATA column", column, f"present in {path} (a stand-A reduced table)")
+    table = table.copy()  # the caller's frame is never modified
+    usable = np.isfinite(table[["l_over_a", "F_y_N", "i_k"]].to_numpy()).all(axis=1)
+    dropped = int((~usable).sum())
+    table = table[usable]
+    rows = table["point"].to_numpy()
+    f_n = settings.loc[rows, "normal_force_N"].to_numpy(dtype=float)
+    delta_h = settings.loc[rows, "delta_h_m"].to_numpy(dtype=float)
+    geometries = [stand.params.geometry_at(float(d)) for d in delta_h]
+    b_over_a = np.array([g.b_over_a(float(f)) for g, f in zip(geometries, f_n)])
+    from rig.reduction.equations import alpha_prime_line_contact
+
+    i_k = _finite("i_k", table["i_k"].to_numpy(), rows)
+    k = np.array([alpha_prime_line_contact(1.0, b, g.r1 / (math.sin(g.alpha_1) + i), g.radius_x)
+                  for g, b, i in zip(geometries, b_over_a, i_k)])
+    spec = stand.contact_spec
+    y = _finite("F_y_N", table["F_y_N"].to_numpy(), rows) / f_n
+    u = _finite("u_F_y_N", table["u_F_y_N"].to_numpy(), rows) / f_n
+    if np.any(u <= 0):
+        raise ParameterError("u_F_y_N", float(u.min() * f_n[np.argmin(u)]), "> 0 N for every point fitted")
+    notes = [f"{dropped} point(s) without l/a or F_y (reduction's reason) left out"] if dropped else []
+    common, note = _calibration_covariance(read_calibration(log).loc[rows], y, f_n, geometries)
+    notes.append(note)
+    return Observations(
+        quantity=np.full(y.size, "F_y_per_F_N"), y=y, u=u,
+        x=_finite("l_over_a", table["l_over_a"].to_numpy(), rows), x_label="l/a",
+        l=table["l_over_a"].to_numpy(dtype=float), c=_finite("c_over_a", table["c_over_a"].to_numpy(), rows),
+        u_l=np.nan_to_num(table["u_l_over_a"].to_numpy(dtype=float)),
+        alpha=np.full(y.size, np.nan), alpha_per_mu=k, b_over_a=b_over_a,
+        series=np.array([f"F_N = {f:g} N" for f in f_n]),
+        contact=ContactCondition(spec.model, "line", spec.poisson, spec.n if n is None else n),
+        fixed_effects=dict(spec.effects), source=f"{path} (stand A, scene {scene.name})",
+        stand=stand, geometry=geometries, notes=tuple(notes), common_cov=common,
+    )
+
+
+CAL = "dynamometer_10_"
+
+
+def _calibration_covariance(cal: pd.DataFrame, y: np.ndarray, f_n: np.ndarray, geometries) -> tuple:
+    """Covariance of y = F_y/F_N shared by all points through the dynamometer's one calibration.
+
+    F_y = (s - s0)/S (lever_dyn/R_v) (eq. 33): dy/dS = -y/S, dy/ds0 = -(lever_dyn/R_v)/(S F_N);
+    cov = a a^T u_S^2 + b b^T u_s0^2 + (a b^T + b a^T) cov(S, s0) with the record's u and cov.
+    """
+    columns = ["sensitivity_V_N", "u_sensitivity_V_N", "u_offset_V", "cov_sensitivity_offset_V2_N"]
+    if any(CAL + c not in cal.columns for c in columns):
+        return None, "no dynamometer calibration record in the log: errors treated as independent"
+    values = cal[[CAL + c for c in columns]].to_numpy(dtype=float)
+    if not np.allclose(values, values[0], rtol=0, atol=0):
+        return None, "dynamometer calibrated more than once: calibration errors treated as independent"
+    sens, u_sens, u_off, cov_so = values[0]
+    lever = np.array([g.dynamometer_lever / g.yoke_lever for g in geometries])
+    a = -y / sens
+    b = -lever / (sens * f_n)
+    common = np.outer(a, a) * u_sens**2 + np.outer(b, b) * u_off**2 + (np.outer(a, b) + np.outer(b, a)) * cov_so
+    return common, (f"dynamometer calibration common to all points (u(S)/S = {u_sens / sens:.2%}, u(s0) = "
+                    f"{u_off:.3g} V): generalised least squares with its covariance")
+
+
+def is_digitised(path: str | Path, sidecar: str | Path | None) -> bool:
+    """True for a digitised export: a sidecar given or a .toml beside the .csv that is a sidecar."""
+    path = Path(path)
+    if sidecar is not None:
+        return True
+    toml = path.with_suffix(".toml")
+    if path.suffix != ".csv" or not toml.is_file():
+        return False
+    try:
+        return "datasets" in tomllib.loads(toml.read_text(encoding="utf-8-sig"))
+    except tomllib.TOMLDecodeError:
+        return True  # let the sidecar reader name the syntax error

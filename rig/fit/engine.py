@@ -1,0 +1,283 @@
+"""Weighted least squares with effective variance, profile-likelihood intervals, correlations.
+
+chi2(theta) = r^T V^-1 r, r = y - f(theta), V = diag(u_eff^2 - diag C) + C: u_eff^2 = u^2 +
+(df/dl u_l)^2 (Orear's effective variance: the rolling point l/a is itself measured; df/dl from
+the model at the start and again at the first optimum, then held while the fit is repeated) and
+C the covariance of errors common to all points (a calibration, Observations.common_cov; its
+diagonal is already inside u). The residuals are whitened with the Cholesky factor of V and
+minimised with scipy.optimize.least_squares (trust-region reflective, bounds = the ranges).
+
+95 % interval of a parameter: the values where the profile chi2 (minimised over the others)
+rises 3.84 (chi2 with 1 degree of freedom) above the minimum; an end that does not rise that far
+within the parameter's range is the range's end and is flagged open. Standard uncertainty and
+correlations: from the Gauss-Newton covariance (J^T J)^-1 at the optimum, with J the Jacobian of
+the weighted residuals. No rescaling by chi2/dof: the data's u is taken as stated (the summary
+gives chi2/dof so that a poor fit is visible).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.linalg import solve_triangular
+from scipy.optimize import brentq, least_squares
+
+from rig.errors import ConvergenceError, ParameterError
+from rig.fit.forward import ForwardModel
+
+DELTA_CHI2_95 = 3.841458820694124  # chi2 quantile 0.95, 1 degree of freedom
+CORRELATION_LIMIT = 0.95
+DL_STEP = 1e-3  # [units of a] finite-difference step of df/dl
+
+
+class FitConvergenceError(ConvergenceError):
+    """The least-squares fit did not converge; names the effect set and the optimiser's reason."""
+
+
+@dataclass(frozen=True)
+class ParameterEstimate:
+    """Value, standard uncertainty (covariance), 95 % profile interval and whether each end is open."""
+
+    name: str
+    unit: str
+    value: float
+    u: float
+    lo95: float
+    hi95: float
+    open_lo: bool
+    open_hi: bool
+
+
+@dataclass(frozen=True)
+class FitResult:
+    """One fitted effect set: estimates, correlation, chi2, information criteria, diagnostics."""
+
+    names: tuple[str, ...]
+    estimates: tuple[ParameterEstimate, ...]
+    correlation: np.ndarray
+    chi2: float
+    n_points: int
+    prediction: np.ndarray
+    band: np.ndarray
+    u_eff: np.ndarray
+    warnings: tuple[str, ...]
+    evaluations: int
+    message: str
+    table_error: float = float("nan")
+    polished: bool = False
+    scatter: float = 0.0
+
+    @property
+    def k(self) -> int:
+        return len(self.names)
+
+    @property
+    def aic(self) -> float:
+        return self.chi2 + 2.0 * self.k
+
+    @property
+    def bic(self) -> float:
+        return self.chi2 + self.k * np.log(self.n_points)
+
+    @property
+    def dof(self) -> int:
+        return self.n_points - self.k
+
+    def estimate(self, name: str) -> ParameterEstimate:
+        return self.estimates[self.names.index(name)]
+
+
+def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, polish: str = "auto",
+        polish_ratio: float = 0.2, label: str = "", scatter: float | None = 0.0) -> FitResult:
+    """Fit ``model`` to its observations from ``start``; see the module docstring.
+
+    polish: "auto" (direct-solve refit of the estimate when max |table - direct| at the
+    optimum exceeds polish_ratio * min u; the table's profile intervals and covariance are then
+    moved to the polished estimate), "check" (report table - direct, never refit), "never" or
+    "always". scatter: independent scatter s added to every point's u (u_eff^2 += s^2)
+    [units of y]; None estimates it (see estimate_scatter).
+    """
+    obs = model.obs
+    free = model.free
+    if obs.size <= len(free):
+        raise ParameterError("data points", obs.size, f"> {len(free)} (the number of free parameters)")
+    lo = np.array([p.lo for p in free])
+    hi = np.array([p.hi for p in free])
+    x0 = np.array([p.check(v, "start value of ") for p, v in zip(free, start)])
+    x0 = np.clip(x0, lo + 1e-9 * (hi - lo), hi - 1e-9 * (hi - lo))
+    common = obs.common_cov
+    s = 0.0 if scatter is None else float(scatter)
+    weights = Weights(effective_u(model, x0, s), common)
+    res = _minimise(model.predict, obs.y, weights, x0, lo, hi, label)
+    for _ in range(3 if scatter is None else 1):
+        if scatter is None:
+            s = estimate_scatter(model, res.x, obs.size - len(free))
+        weights = Weights(effective_u(model, res.x, s), common)
+        res = _minimise(model.predict, obs.y, weights, res.x, lo, hi, label)
+    predict = model.predict
+    chi2 = float(np.sum(res.fun**2))
+    slopes = _slopes(predict, res.x, lo, hi)
+    jac = np.column_stack([-weights(column) for column in slopes.T]) if slopes.size else slopes
+    cov, corr = _covariance(jac)
+    u = np.sqrt(np.clip(np.diag(cov), 0.0, None))
+    x_table, chi2_table = res.x, chi2
+    table_error = float("nan")
+    polished = False
+    if polish != "never":
+        table_error = float(np.max(np.abs(model.direct(res.x) - model.predict(res.x))))
+        if polish == "always" or (polish == "auto" and table_error > polish_ratio * float(np.min(obs.u))):
+            res = _minimise(model.direct, obs.y, weights, res.x, lo, hi, label, max_nfev=20 * (len(free) + 1))
+            chi2 = float(np.sum(res.fun**2))
+            polished = True
+    warnings = []
+    intervals = []
+    for i, p in enumerate(free):
+        if profile:
+            interval = _profile_interval(predict, obs.y, weights, x_table, lo, hi, i, chi2_table, label, u[i])
+            shift = res.x[i] - x_table[i]  # polished: the table's profile moved to the direct optimum
+            interval = (max(lo[i], interval[0] + shift), min(hi[i], interval[1] + shift), *interval[2:])
+        else:
+            interval = (max(lo[i], res.x[i] - 1.96 * u[i]), min(hi[i], res.x[i] + 1.96 * u[i]), False, False)
+        intervals.append(interval)
+        if interval[2] and interval[3]:
+            warnings.append(f"{p.name} is not identifiable from this data: its profile is flat (chi2 rises less "
+                            f"than {DELTA_CHI2_95:.2f} over the whole range [{p.lo:g}, {p.hi:g}])")
+    for i, j in zip(*np.triu_indices(len(free), 1)):
+        if abs(corr[i, j]) > CORRELATION_LIMIT:
+            warnings.append(f"{free[i].name} and {free[j].name} are not separately identifiable: correlation "
+                            f"{corr[i, j]:+.3f} (|r| > {CORRELATION_LIMIT})")
+    estimates = tuple(
+        ParameterEstimate(p.name, p.unit, float(res.x[i]), float(u[i]), *map(float, intervals[i][:2]),
+                          bool(intervals[i][2]), bool(intervals[i][3]))
+        for i, p in enumerate(free)
+    )
+    band = np.sqrt(np.clip(np.einsum("ij,jk,ik->i", slopes, cov, slopes), 0, None))
+    u_total = weights.u_eff if common is None else np.sqrt(np.maximum(weights.u_eff**2, np.diag(common)))
+    return FitResult(
+        names=tuple(p.name for p in free), estimates=estimates, correlation=corr, chi2=chi2, n_points=obs.size,
+        prediction=(model.direct if polished else predict)(res.x), band=band, u_eff=u_total, warnings=tuple(warnings),
+        evaluations=model.evaluations, message=str(res.message), table_error=table_error, polished=polished,
+        scatter=s,
+    )
+
+
+class Weights:
+    """Whitening of residuals: L^-1 r with V = L L^T (diagonal when there is no common covariance)."""
+
+    def __init__(self, u_eff: np.ndarray, common: np.ndarray | None) -> None:
+        self.u_eff = u_eff
+        if common is None:
+            self.factor = None
+        else:
+            v = common.copy()
+            v[np.diag_indices_from(v)] = np.maximum(u_eff**2, np.diag(common) * (1 + 1e-9))
+            self.factor = np.linalg.cholesky(v)
+
+    def __call__(self, r: np.ndarray) -> np.ndarray:
+        if self.factor is None:
+            return r / self.u_eff
+        return solve_triangular(self.factor, r, lower=True, check_finite=False)
+
+
+def effective_u(model: ForwardModel, theta: np.ndarray, scatter: float = 0.0) -> np.ndarray:
+    """sqrt(u^2 + (df/dl u_l)^2 + scatter^2) per point [units of y]."""
+    obs = model.obs
+    if not np.any(obs.u_l > 0):
+        return np.hypot(obs.u, scatter)
+    slope = (model.predict(theta, dl=DL_STEP) - model.predict(theta, dl=-DL_STEP)) / (2 * DL_STEP)
+    return np.sqrt(obs.u**2 + (slope * obs.u_l) ** 2 + scatter**2)
+
+
+def estimate_scatter(model: ForwardModel, theta: np.ndarray, dof: int) -> float:
+    """Independent scatter s [units of y] that makes chi2(theta) = dof; 0 when chi2 <= dof already.
+
+    For run data whose stated u misses an independent part (e.g. the dynamometer's noise and
+    drift when u is all calibration): the usual Birge-type estimate, applied to the independent
+    part only, so that the common calibration error keeps its stated size.
+    """
+    residual = model.obs.y - model.predict(theta)
+    u_eff = effective_u(model, theta)
+    common = model.obs.common_cov
+
+    def excess(log_s: float) -> float:
+        return float(np.sum(Weights(np.sqrt(u_eff**2 + np.exp(2 * log_s)), common)(residual) ** 2)) - dof
+
+    lo = np.log(1e-6 * float(np.median(u_eff)))
+    if dof <= 0 or excess(lo) <= 0:
+        return 0.0
+    hi = np.log(10.0 * float(np.max(np.abs(residual))) + 1e-300)
+    return float(np.exp(brentq(excess, lo, hi, xtol=1e-3)))
+
+
+def _minimise(predict, y, weights, x0, lo, hi, label, max_nfev=None):
+    def residual(theta):
+        return weights(y - predict(theta))
+
+    try:
+        res = least_squares(residual, x0, bounds=(lo, hi), x_scale=hi - lo, diff_step=1e-4, max_nfev=max_nfev,
+                            xtol=1e-8, ftol=1e-8)
+    except ValueError as error:
+        raise FitConvergenceError(f"fit {label}: the least-squares solver stopped: {error}") from None
+    if not np.all(np.isfinite(res.fun)) or (res.status <= 0 and max_nfev is None):
+        raise FitConvergenceError(f"fit {label} did not converge: {res.message}")
+    return res
+
+
+def _slopes(predict, x, lo, hi) -> np.ndarray:
+    """df/dtheta (N, k) by central differences kept inside the bounds."""
+    columns = []
+    for k in range(x.size):
+        h = 1e-4 * (hi[k] - lo[k])
+        xp, xm = x.copy(), x.copy()
+        xp[k] = min(hi[k], x[k] + h)
+        xm[k] = max(lo[k], x[k] - h)
+        columns.append((predict(xp) - predict(xm)) / (xp[k] - xm[k]))
+    return np.column_stack(columns) if columns else np.zeros((0, 0))
+
+
+def _covariance(jac: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    cov = np.linalg.pinv(jac.T @ jac)
+    d = np.sqrt(np.clip(np.diag(cov), 1e-300, None))
+    corr = cov / np.outer(d, d)
+    np.fill_diagonal(corr, 1.0)
+    return cov, np.clip(corr, -1.0, 1.0)
+
+
+def _profile_chi2(predict, y, weights, x_best, lo, hi, i, value, label) -> float:
+    others = [k for k in range(x_best.size) if k != i]
+
+    def full(sub):
+        theta = x_best.copy()
+        theta[i] = value
+        theta[others] = sub
+        return theta
+
+    if not others:
+        return float(np.sum(weights(y - predict(full(np.empty(0)))) ** 2))
+    res = _minimise(lambda sub: predict(full(sub)), y, weights, x_best[others], lo[others], hi[others], label)
+    return float(np.sum(res.fun**2))
+
+
+def _profile_interval(predict, y, weights, x_best, lo, hi, i, chi2_min, label, scale):
+    """(lo95, hi95, open_lo, open_hi): where the profile chi2 crosses chi2_min + 3.84.
+
+    scale: the parameter's standard uncertainty; the crossings are found to 1e-3 of it.
+    """
+    target = chi2_min + DELTA_CHI2_95
+
+    def excess(value):
+        return _profile_chi2(predict, y, weights, x_best, lo, hi, i, value, label) - target
+
+    ends = []
+    for bound in (lo[i], hi[i]):
+        if bound == x_best[i] or excess(bound) < 0:
+            ends.append((bound, True))
+            continue
+        ends.append((brentq(excess, *sorted((x_best[i], bound)), xtol=_xtol(scale, hi[i] - lo[i])), False))
+    return ends[0][0], ends[1][0], ends[0][1], ends[1][1]
+
+
+def _xtol(scale: float, span: float) -> float:
+    return 1e-4 * span if not np.isfinite(scale) or scale <= 0 else min(1e-4 * span, 1e-3 * scale)
