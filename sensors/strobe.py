@@ -51,8 +51,6 @@ class StrobeDisc:
         dk = np.diff(k)
         n_per_segment = np.abs(dk).astype(np.int64)
         total = int(n_per_segment.sum())
-        if total == 0:
-            return np.zeros(0)
         seg = np.repeat(np.arange(dk.size), n_per_segment)
         first = np.cumsum(n_per_segment) - n_per_segment
         j = np.arange(total) - np.repeat(first, n_per_segment)
@@ -60,4 +58,7 @@ class StrobeDisc:
         n = np.where(forward, k[seg] + 1.0 + j, k[seg] - j)
         u0, u1 = u[seg], u[seg + 1]
         frac = (n - u0) / (u1 - u0)
-        return t[seg] + frac * (t[seg + 1] - t[seg])
+        times = t[seg] + frac * (t[seg + 1] - t[seg])
+        if u[0] == k[0] and u[1] > u[0]:  # a mark in the light path at the first sample, moving on: it crosses there
+            times = np.concatenate([t[:1], times])
+        return times
