@@ -2,7 +2,8 @@
 
 The log holds its scene's text verbatim; it is validated with the current stand code, the stand
 is built from it (nothing simulated) and reduces the log, with the folder's lock held (a log
-that a run is still writing is refused by name, rig.runner.folder_lock): reduced.csv (and the
+that a run is still writing is refused by name, rig.runner.folder_lock; a folder that takes no
+lock file, e.g. a read-only one, is reduced without it): reduced.csv (and the
 figure, when the scene asks for figures) go into the output folder, ``/reduced`` into the log.
 """
 
@@ -30,7 +31,8 @@ def reduce_log_file(log_path: Path, out_dir: Path | None = None, **parse_options
         try:
             stack.enter_context(folder_lock(log_path.parent, f"rig reduce {log_path.name}"))
         except FolderLockedError as error:
-            raise FolderLockedError(f"{log_path}: the log is being written (or reduced) by another process: {error}") from None
+            raise FolderLockedError(
+                f"{log_path}: the log is being written (or reduced) by another process: {error}") from None
         except ParameterError as error:
             if error.name != "output folder":
                 raise

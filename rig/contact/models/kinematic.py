@@ -11,9 +11,9 @@ displacement in mu p0 a/G, slip in mu p0 v/G, G = Kalker's combined shear modulu
 t is the traction the half-space feels (q = t without inertia). The paper's law (14),
 q = -mu p w/max(|w|, v0), is exactly this Coulomb condition once the element's own slip
 v0 = Psi v_el (eqs. 20, 25) is split off the total slip (the plastic part (Psi - 1) v_el is a
-slip velocity with no grid length in it, rig.contact.effects.plastic_slip); solving the coupled problem for every
-element at once *is* the kinematic law. The element-by-element marching that the paper
-advertises ("no iterative steps") diverges under grid refinement (seed notes 1.9 step 6;
+slip velocity with no grid length in it, rig.contact.effects.plastic_slip); solving the coupled
+problem for every element at once *is* the kinematic law. The element-by-element marching that
+the paper advertises ("no iterative steps") diverges under grid refinement (seed notes 1.9 step 6;
 tests/contact/test_marching_diverges.py shows it), so it is not offered.
 
 Solver: semi-smooth Newton on F(t) = q - P_r(q - rho s) (P_r: projection on the disc of radius
