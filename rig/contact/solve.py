@@ -34,7 +34,8 @@ RIGID_SLIDING_CREEPAGE = 1e12
 DEFAULT_N = 32
 # Revision of the grid models' discretisation; part of every surrogate table's cache key.
 # 2: plastic slip of eq. (25) as a grid-independent slip velocity (docs/contact-model.md).
-DISCRETISATION_REVISION = 2
+# 3: FASTSIM's spin-moment flexibility L4 (fitted to C33).
+DISCRETISATION_REVISION = 3
 N_RANGE = (4, 512)
 # Effects each model can represent; the others would be silently meaningless, so they are errors.
 MODEL_EFFECTS = {

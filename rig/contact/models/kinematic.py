@@ -37,7 +37,7 @@ from scipy.sparse.linalg import LinearOperator, gmres, splu
 from rig.contact.effects import ContactEffects
 from rig.contact.grid import Grid
 from rig.contact.influence import InfluenceOperator, influence_operator
-from rig.contact.kalker import kalker_coefficients
+from rig.contact.kalker import creep_coefficients
 from rig.contact.kinematics import Creepage
 from rig.contact.models import fastsim
 from rig.errors import ConvergenceError
@@ -245,10 +245,10 @@ def solve_full_stick(grid: Grid, poisson: float, creepage: Creepage, effects: Co
 
 
 def _fastsim_start(grid: Grid, poisson: float, creepage: Creepage, r: np.ndarray) -> np.ndarray:
-    """FASTSIM tractions with the ellipse's Kalker flexibility: a start that already has the
+    """FASTSIM tractions with the ellipse's flexibilities: a start that already has the
     right stick/slip pattern, so Newton needs few steps (a guess only; any start converges)."""
     b = float(np.clip(grid.b_over_a, 0.1, 10.0))
-    flex = fastsim.flexibility("ellipse", b, kalker_coefficients(b, poisson), creepage)
+    flex = fastsim.flexibility("ellipse", b, creep_coefficients("ellipse", b, poisson), creepage)
     return grid.gather(fastsim.march(grid, fastsim.slip_increments(grid, creepage), grid.scatter(r), flex))
 
 
