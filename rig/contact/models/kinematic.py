@@ -35,7 +35,7 @@ import scipy.sparse as sparse
 from scipy.sparse.linalg import LinearOperator, gmres, splu
 
 from rig.contact.effects import ContactEffects
-from rig.contact.grid import Grid
+from rig.contact.grid import Grid, make_grid
 from rig.contact.influence import InfluenceOperator, influence_operator
 from rig.contact.kalker import creep_coefficients
 from rig.contact.kinematics import Creepage
@@ -47,6 +47,9 @@ TRANSPORT = (1.0, -1.0)
 NEWTON_TOL = 1e-9  # max |F| relative to the largest traction bound (tractions are O(1) in mu p0)
 MAX_NEWTON = 50
 MAX_MEMORY_PASSES = 50
+# grids with at least this many cells across 2a start Newton from the solution on half as many
+# (nested iteration; coarser ones from FASTSIM)
+NESTED_START_N = 64
 
 
 @dataclass(frozen=True)
@@ -193,7 +196,7 @@ def solve_grid(grid: Grid, poisson: float, creepage: Creepage, effects: ContactE
     static = effects.static_friction
     sticking_upstream = np.ones(n_cells, dtype=bool)
     r = p if static is None else static.bound(p, sticking_upstream)
-    t = _fastsim_start(grid, poisson, creepage, r)
+    t = _start(grid, poisson, creepage, effects, r)
     total_newton = total_krylov = 0
     for memory_pass in range(1, MAX_MEMORY_PASSES + 1):
         t, n_newton, n_krylov = _newton(disc.apply, s_g, precond, r, rho, t)
@@ -242,6 +245,22 @@ def solve_full_stick(grid: Grid, poisson: float, creepage: Creepage, effects: Co
     if info != 0:
         raise ConvergenceError(f"full-stick linear solve did not reach rtol {rtol:g} (GMRES info {info})")
     return t.reshape(2, n)
+
+
+def _start(grid: Grid, poisson: float, creepage: Creepage, effects: ContactEffects, r: np.ndarray) -> np.ndarray:
+    """Newton's start (2, N) [mu p0]: on fine grids the solution on the grid with half as many
+    cells, carried to the fine cells (each takes the traction of the coarse cell it lies in,
+    limited to its own bound), so that Newton only refines the stick/slip pattern (5 steps
+    instead of 24 at n = 128, pure spin, alpha' = 20.5); on coarser grids FASTSIM. The start changes the cost, not the answer."""
+    if grid.ny < NESTED_START_N:
+        return _fastsim_start(grid, poisson, creepage, r)
+    coarse = make_grid(grid.shape, grid.b_over_a, grid.ny // 2)
+    t_coarse = coarse.scatter(solve_grid(coarse, poisson, creepage, effects).q)
+    xc, yc = grid.centres()
+    i = np.clip(np.floor((xc - coarse.x[0]) / coarse.hx + 0.5).astype(int), 0, coarse.x.size - 1)
+    j = np.clip(np.floor((yc - coarse.y[0]) / coarse.hy + 0.5).astype(int), 0, coarse.ny - 1)
+    t = t_coarse[:, i, j]
+    return project(t, r)[0]
 
 
 def _fastsim_start(grid: Grid, poisson: float, creepage: Creepage, r: np.ndarray) -> np.ndarray:
