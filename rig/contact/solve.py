@@ -35,7 +35,8 @@ DEFAULT_N = 32
 # Revision of the grid models' discretisation; part of every surrogate table's cache key.
 # 2: plastic slip of eq. (25) as a grid-independent slip velocity (docs/contact-model.md).
 # 3: FASTSIM's spin-moment flexibility L4 (fitted to C33).
-DISCRETISATION_REVISION = 3
+# 4: kinematic transport of second order with the edge-corrected row entry (rig.contact.models.kinematic).
+DISCRETISATION_REVISION = 4
 N_RANGE = (4, 512)
 # Effects each model can represent; the others would be silently meaningless, so they are errors.
 MODEL_EFFECTS = {
