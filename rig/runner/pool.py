@@ -12,7 +12,7 @@ handle; a reducer registered on multiprocessing's pickler (only there) sends the
 An error inside a worker comes back as :class:`PointFailure`: a named error (rig.errors.RigError)
 is raised in the parent as it was raised in the worker, as a serial run raises it; any other
 comes back as text with its traceback and is raised as :class:`WorkerError` naming the point.
-Workers ignore Ctrl-C (the parent reports it). ``simulate_point`` and ``accept`` are shared with
+Workers ignore Ctrl-C (the parent reports it). ``simulate_point``, ``accept`` and ``ends_sweep`` are shared with
 the Dask path (rig.runner.dask_pool).
 """
 
@@ -78,12 +78,19 @@ def simulate_point(stand, scene: StandScene, point: PlannedPoint) -> PointResult
     return results[0]
 
 
+def ends_sweep(result: PointResult | PointFailure, scene: StandScene) -> bool:
+    """True when no point after this one is needed: an error, or a point that did not settle
+    under the STOP policy."""
+    return isinstance(result, PointFailure) or (
+        result.failure is not None and scene.procedure.on_settle_timeout is TimeoutPolicy.STOP)
+
+
 def accept(result: PointResult | PointFailure, scene: StandScene, deliver: Callable[[PointResult], None]) -> bool:
     """Deliver a worker's result in point order; True when the STOP policy ends the sweep here."""
     if isinstance(result, PointFailure):
         raise result.error()
     deliver(result)
-    return result.failure is not None and scene.procedure.on_settle_timeout is TimeoutPolicy.STOP
+    return ends_sweep(result, scene)
 
 
 _worker: dict = {}
