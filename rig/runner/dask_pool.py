@@ -156,9 +156,11 @@ def run_dask(scene: StandScene, points: Sequence[PlannedPoint], address: str,
         shared = client.scatter(scene, broadcast=True, hash=False)  # once, not with every task
         futures = [client.submit(_simulate_batch, run, rig.__version__, shared, batch,
                                  key=f"rig-points-{batch[0].index}-{batch[-1].index}-{run}") for batch in batches]
-        for batch, future in zip(batches, futures):
+        for i, (batch, future) in enumerate(zip(batches, futures)):
             try:
                 results = future.result()
+                future.release()  # the worker may forget a batch once it is read (a large study's memory)
+                futures[i] = None
             except Exception as error:  # noqa: BLE001 - a worker died, the task was lost or not (un)picklable
                 point = batch[0]
                 raise WorkerError(f"point {point.index} {dict(point.settings)}"
@@ -167,6 +169,7 @@ def run_dask(scene: StandScene, points: Sequence[PlannedPoint], address: str,
             if any(accept(result, scene, deliver) for result in results):
                 break
     finally:
-        if futures:
-            client.cancel(futures)
+        pending = [future for future in futures if future is not None]
+        if pending:
+            client.cancel(pending)
         client.close()

@@ -18,6 +18,7 @@ the Dask path (rig.runner.dask_pool).
 
 from __future__ import annotations
 
+import collections
 import multiprocessing
 import signal
 import traceback
@@ -113,8 +114,9 @@ def run_pool(scene: StandScene, points: Sequence[PlannedPoint], jobs: int,
     context = multiprocessing.get_context("spawn")
     pool = ProcessPoolExecutor(max_workers=jobs, mp_context=context, initializer=_start_worker, initargs=(scene,))
     try:
-        futures = [pool.submit(_simulate, point) for point in points]
-        for future in futures:
+        futures = collections.deque(pool.submit(_simulate, point) for point in points)
+        while futures:
+            future = futures.popleft()  # not kept once read: a large study's results would stay in memory
             try:
                 result = future.result()
             except BrokenProcessPool as error:  # a worker died, e.g. the stand failed to build or calibrate
