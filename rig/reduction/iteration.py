@@ -81,8 +81,10 @@ class FixedPoint(Generic[State]):
 Estimate = Callable[[float], tuple[float, State, str]]
 
 
-def solve_mu(estimate: Estimate, settings: ReductionSettings, probe: bool = True) -> FixedPoint:
-    """Solve mu = g(mu); estimate(mu) returns (g(mu) or NaN, state, reason for a NaN).
+def solve_mu(estimate: Estimate, settings: ReductionSettings, probe: bool = True,
+             mu_start: float | None = None) -> FixedPoint:
+    """Solve mu = g(mu) from ``mu_start`` (None: settings.mu_start); estimate(mu) returns (g(mu) or
+    NaN, state, reason for a NaN).
 
     The iteration runs on y = ln(mu): the coefficients are close to power laws of alpha' ~ mu,
     so the map is nearly linear in y (Wegstein then converges in a few steps) and mu stays
@@ -90,7 +92,7 @@ def solve_mu(estimate: Estimate, settings: ReductionSettings, probe: bool = True
     identifiability at the fixed point (once per point, at the nominal readings; the perturbed
     evaluations of the Jacobian skip it).
     """
-    y = math.log(settings.mu_start)
+    y = math.log(settings.mu_start if mu_start is None else mu_start)
     y_prev = g_prev = math.nan
     for k in range(1, settings.max_iterations + 1):
         g, state, reason = estimate(math.exp(y))
@@ -144,9 +146,8 @@ def solve_with_drivers(make_estimate: Callable[[str], Estimate], drivers: tuple[
     """
     tried = []
     fixed = FixedPoint(math.nan, None, 0, no_driver or "no friction estimate may drive alpha'")
-    start = dataclasses.replace(settings, mu_start=mu_start)
-    for driver in drivers:
-        fixed = solve_mu(make_estimate(driver), start, probe)
+    for driver in drivers:  # mu_start passed on, not replaced in settings: a replace validates, per evaluation
+        fixed = solve_mu(make_estimate(driver), settings, probe, mu_start)
         if not fixed.reason:
             return fixed, driver
         tried.append(f"{driver}: {fixed.reason}")

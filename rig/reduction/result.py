@@ -16,6 +16,7 @@ A stand's chain is a function ``evaluate(values, start) -> Evaluation`` of the f
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
@@ -86,7 +87,8 @@ class ReducedPoint:
     values/uncertainties/expanded: output name -> value / standard uncertainty / half width U95
     of the 95 % interval (units in the names, e.g. ``l_m``; names without a unit are
     dimensionless); reasons: output name -> why it is NaN; iterations of the mu <-> alpha' loop;
-    driver: the friction estimate that fed alpha'; propagation and budget of the first-order model.
+    driver: the friction estimate that fed alpha'; propagation: the first-order model, whose
+    ``budget`` is split on first use (a reduced table does not need it: rig.reduction.table).
     """
 
     values: Mapping[str, float]
@@ -96,7 +98,11 @@ class ReducedPoint:
     iterations: int
     driver: str
     propagation: Propagation
-    budget: UncertaintyBudget
+
+    @functools.cached_property
+    def budget(self) -> UncertaintyBudget:
+        """The first-order variance split per input and per source (rig.reduction.budget)."""
+        return budget(self.propagation)
 
     def row(self) -> dict[str, float | str]:
         """Flat row: each output followed by ``u_<output>``, then ``U95_<output>`` for every
@@ -152,12 +158,35 @@ def reduce_stand_point(evaluate: Callable[..., Evaluation], inputs: InputSet, nu
         raise ParameterError("coefficients", chain.get("coefficients"),
                              "a callable (l_over_a, c_over_a, alpha) -> (nu_T, nu_v, nu_0)")
     drivers, no_driver = significant_drivers(inputs, numerators, settings.significance)
+    chain = dict(chain, coefficients=remembered(chain["coefficients"]))
 
     def bound(values: Mapping[str, float], start: Start) -> Evaluation:
         return evaluate(values, start, settings=settings, **chain)
 
     start = Start(settings.mu_start, drivers, True, no_driver)
     return reduce_point(bound, inputs, start, settings.relative_step, guards, settings.significance, driven)
+
+
+def remembered(coefficients: Callable[[float, float, float], tuple]) -> Callable[[float, float, float], tuple]:
+    """``coefficients`` answering a repeated state from memory (one point's reduction: the Jacobian's
+    evaluations restart from the nominal mu, and an input that moves neither the rolling point nor
+    the driving estimate - the gate time, the other estimate's reading - asks the contact model the
+    nominal questions again). The same answers, also when the model raises (raised again)."""
+    memory: dict[tuple[float, float, float], tuple | Exception] = {}
+
+    def answer(l_over_a: float, c_over_a: float, alpha: float) -> tuple:
+        key = (l_over_a, c_over_a, alpha)
+        if key not in memory:
+            try:
+                memory[key] = coefficients(l_over_a, c_over_a, alpha)
+            except Exception as error:  # noqa: BLE001 - remembered and raised again, as the model raised it
+                memory[key] = error
+        found = memory[key]
+        if isinstance(found, Exception):
+            raise found
+        return found
+
+    return answer
 
 
 def reduce_point(evaluate: Evaluate, inputs: InputSet, start: Start, relative_step: float,
@@ -194,5 +223,4 @@ def reduce_point(evaluate: Evaluate, inputs: InputSet, start: Start, relative_st
         iterations=nominal.iterations,
         driver=nominal.driver,
         propagation=propagation,
-        budget=budget(propagation),
     )

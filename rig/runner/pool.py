@@ -12,12 +12,13 @@ handle; a reducer registered on multiprocessing's pickler (only there) sends the
 An error inside a worker comes back as :class:`PointFailure`: a named error (rig.errors.RigError)
 is raised in the parent as it was raised in the worker, as a serial run raises it; any other
 comes back as text with its traceback and is raised as :class:`WorkerError` naming the point.
-Workers ignore Ctrl-C (the parent reports it). ``simulate_point`` and ``accept`` are shared with
+Workers ignore Ctrl-C (the parent reports it). ``simulate_point``, ``accept`` and ``ends_sweep`` are shared with
 the Dask path (rig.runner.dask_pool).
 """
 
 from __future__ import annotations
 
+import collections
 import multiprocessing
 import signal
 import traceback
@@ -78,12 +79,19 @@ def simulate_point(stand, scene: StandScene, point: PlannedPoint) -> PointResult
     return results[0]
 
 
+def ends_sweep(result: PointResult | PointFailure, scene: StandScene) -> bool:
+    """True when no point after this one is needed: an error, or a point that did not settle
+    under the STOP policy."""
+    return isinstance(result, PointFailure) or (
+        result.failure is not None and scene.procedure.on_settle_timeout is TimeoutPolicy.STOP)
+
+
 def accept(result: PointResult | PointFailure, scene: StandScene, deliver: Callable[[PointResult], None]) -> bool:
     """Deliver a worker's result in point order; True when the STOP policy ends the sweep here."""
     if isinstance(result, PointFailure):
         raise result.error()
     deliver(result)
-    return result.failure is not None and scene.procedure.on_settle_timeout is TimeoutPolicy.STOP
+    return ends_sweep(result, scene)
 
 
 _worker: dict = {}
@@ -106,8 +114,9 @@ def run_pool(scene: StandScene, points: Sequence[PlannedPoint], jobs: int,
     context = multiprocessing.get_context("spawn")
     pool = ProcessPoolExecutor(max_workers=jobs, mp_context=context, initializer=_start_worker, initargs=(scene,))
     try:
-        futures = [pool.submit(_simulate, point) for point in points]
-        for future in futures:
+        futures = collections.deque(pool.submit(_simulate, point) for point in points)
+        while futures:
+            future = futures.popleft()  # not kept once read: a large study's results would stay in memory
             try:
                 result = future.result()
             except BrokenProcessPool as error:  # a worker died, e.g. the stand failed to build or calibrate

@@ -98,6 +98,23 @@ def test_dask_stops_where_one_job_stops(scheduler, tmp_path):
     _same_outputs(tmp_path / "one", tmp_path / "dask")
 
 
+@pytest.mark.parametrize("changes", [SWEEP, STOP], ids=["skip", "stop"])
+def test_batches_of_several_points_equal_one_job(scheduler, tmp_path, monkeypatch, changes):
+    """One task per worker thread (batches of 3 points): failures, the STOP and the log as one job."""
+    monkeypatch.setattr(rig.runner.dask_pool, "TASKS_PER_THREAD", 1)
+    assert rig.runner.dask_pool.batch_size(6, 2) == 3
+    scene = parse_scene(scene_text(changes), name="fake")
+    one = run_scene(scene, tmp_path / "one", progress=False)
+    cluster = run_scene(scene, tmp_path / "dask", scheduler=scheduler, progress=False)
+    assert one.failures == cluster.failures and one.stopped == cluster.stopped and one.in_log == cluster.in_log
+    _same_outputs(tmp_path / "one", tmp_path / "dask")
+
+
+def test_batch_size_shares_the_points_between_the_threads():
+    assert [rig.runner.dask_pool.batch_size(n, 2) for n in (1, 16, 17, 1600, 100_000)] == [1, 1, 2, 64, 64]
+    assert rig.runner.dask_pool.batch_size(5, 0) == 1
+
+
 def test_short_stand_a_scene_on_dask_equals_one_job(scheduler, tmp_path):
     text = load_scene("default").text
     for old, new in STAND_A_SHORT.items():
@@ -144,6 +161,9 @@ class _Done:
     def result(self):
         return self.value
 
+    def release(self):
+        self.value = None
+
 
 class _Lost:
     def result(self):
@@ -151,13 +171,19 @@ class _Lost:
 
 
 class _ClientLosingPoint1:
-    """Stand-in for distributed.Client: runs tasks here, loses point 1's; records cancel and close."""
+    """Stand-in for distributed.Client: runs tasks here, loses the one of point 1; records cancel and close."""
 
     def __init__(self):
         self.cancelled, self.closed = [], False
 
+    def nthreads(self):
+        return {"worker": 1}  # one thread: batches of one point for this 4-point scene
+
+    def scatter(self, value, **options):
+        return value
+
     def submit(self, function, *args, key):
-        return _Lost() if args[-1].index == 1 else _Done(function(*args))
+        return _Lost() if any(point.index == 1 for point in args[-1]) else _Done(function(*args))
 
     def cancel(self, futures):
         self.cancelled = list(futures)
@@ -173,7 +199,7 @@ def test_a_lost_task_is_a_worker_error_naming_the_point(monkeypatch, tmp_path):
     scene = parse_scene(scene_text(NO_FIGURES), name="fake")
     with pytest.raises(WorkerError, match=r"point 1 \{'load_N': 10\.0.*did not run it \(RuntimeError: worker lost\)"):
         run_scene(scene, tmp_path / "run", scheduler="tcp://127.0.0.1:8786", progress=False)
-    assert client.closed and len(client.cancelled) == 4
+    assert client.closed and len(client.cancelled) == 3  # the lost task and the two after it (the first was read)
 
 
 def test_each_worker_thread_keeps_its_own_stand_for_the_last_runs(monkeypatch):
