@@ -35,17 +35,19 @@ class SessionStore:
     def write(self, state: dict) -> None:
         """Write ``state`` (with its ``id``) whole: temporary file, fsync, rename."""
         target = self.path(state["id"])
-        self.folder.mkdir(parents=True, exist_ok=True)
+        text = json.dumps(state, allow_nan=False)  # a value JSON cannot hold fails here, before any file
         tmp = target.with_name(f".{target.name}.{os.getpid()}-{threading.get_ident()}.tmp")
         try:
+            self.folder.mkdir(parents=True, exist_ok=True)
             with open(tmp, "w", encoding="utf-8") as handle:
-                json.dump(state, handle, allow_nan=False)
+                handle.write(text)
                 handle.flush()
                 os.fsync(handle.fileno())
             os.replace(tmp, target)
         except OSError as error:
-            tmp.unlink(missing_ok=True)
             raise ParameterError("--state", str(self.folder), f"a folder the lab can write ({error})") from None
+        finally:
+            tmp.unlink(missing_ok=True)  # gone after the rename; removed after a failure
 
     def read(self, ident: str) -> dict | None:
         """The stored state of ``ident``, or None when there is none."""

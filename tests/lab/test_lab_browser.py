@@ -48,7 +48,8 @@ def _settled(driver) -> None:
 def _apply(driver, **values: str) -> None:
     for element_id, text in values.items():
         _type(driver, element_id, text)
-    driver.find_element(By.ID, "apply").click()
+    stand_b = driver.find_element(By.TAG_NAME, "body").get_attribute("data-stand") == "disc_roller"
+    driver.find_element(By.ID, "apply-b" if stand_b else "apply").click()
     _wait(driver, lambda d: _attr(d, "status", "data-state") == "settling")
     _settled(driver)
 
@@ -61,9 +62,9 @@ def _record(driver, gate_s: str = "4") -> int:
     return before
 
 
-def _check(driver, point: int, answers: dict[str, float | None]) -> str:
+def _check(driver, point: int, answers: dict[str, float | None], outputs: tuple[str, ...] = OUTPUTS) -> str:
     Select(driver.find_element(By.ID, "answer-point")).select_by_value(str(point))
-    values = {f"ans-{name}": "" if answers.get(name) is None else repr(answers[name]) for name in OUTPUTS}
+    values = {f"ans-{name}": "" if answers.get(name) is None else repr(answers[name]) for name in outputs}
     driver.execute_script("for (const [id, v] of Object.entries(arguments[0])) document.getElementById(id).value = v",
                           values)  # typed at once: send_keys, key by key, costs seconds per check
     driver.execute_script("document.getElementById('verdict').dataset.result = ''")

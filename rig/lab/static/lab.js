@@ -130,7 +130,14 @@ async function enter(state) {
   $("answer-point").innerHTML = "";
   state.readings.forEach(addReadings);
   if (state.readings.length) showReadings(state.readings[state.readings.length - 1], false);
+  if (fresh) fillAnswers();
   document.body.dataset.stand = state.stand;
+}
+
+function fillAnswers() {
+  // the values the student last checked for the chosen point (kept by the server, also across a restart)
+  const given = lab.answers[$("answer-point").value] || {};
+  for (const name of outputs()) $(`ans-${name}`).value = given[name] === undefined ? "" : given[name];
 }
 
 function buildSheet() {
@@ -448,6 +455,7 @@ async function init() {
   $("open-practice-b").onclick = () => openSession({ stand: "disc_roller" });
   $("open-exercise").onclick = () => openSession({ stand: $("exercise").selectedOptions[0].dataset.stand, exercise: $("exercise").value, student: $("student").value });
   $("apply").onclick = apply; $("apply-b").onclick = apply; $("record").onclick = record; $("set-strobe").onclick = setStrobe;
+  $("answer-point").onchange = fillAnswers;
   $("check").onclick = check; $("show-reduction").onclick = showReduction; $("save").onclick = save; $("submit").onclick = submit;
   const m = location.hash.match(/session=([0-9a-f]+)/);
   if (m) {
