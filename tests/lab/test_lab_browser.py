@@ -10,6 +10,7 @@ import csv
 from pathlib import Path
 
 import pytest
+from selenium.common.exceptions import TimeoutException
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select, WebDriverWait
 
@@ -42,7 +43,11 @@ def _open(driver, url: str) -> None:
 
 
 def _settled(driver) -> None:
-    _wait(driver, lambda d: _attr(d, "status", "data-state") == "settled")
+    try:
+        _wait(driver, lambda d: _attr(d, "status", "data-state") == "settled")
+    except TimeoutException:
+        shown = {i: driver.find_element(By.ID, i).text for i in ("status", "control-error", "exercise-info", "session-info")}
+        raise AssertionError(f"not settled within {WAIT_S:g} s: {shown}") from None
 
 
 def _apply(driver, **values: str) -> None:

@@ -222,7 +222,15 @@ function live() {
     setStatus("settled", `settled after ${f.settle_s.toFixed(2)} s of simulated time`);
     if (stand().strobe) steadyStrobe(ratio, f.strobe_drift_marks_s);
   });
-  source.onerror = () => { source.close(); };
+  source.onerror = async () => {
+    // the stream broke off (a busy or restarted server): the settled state is the server's all the same
+    source.close();
+    if (lab.source !== source || $("status").dataset.state !== "settling") return;
+    try {
+      const state = await request("GET", `/api/sessions/${lab.session.id}`);
+      if (lab.source === source && state.settle_s !== null) setStatus("settled", `settled after ${state.settle_s.toFixed(2)} s of simulated time (stream interrupted)`);
+    } catch (error) { showError(error); }
+  };
 }
 
 function drawTraces(settle) {
