@@ -411,7 +411,7 @@ function drawResults() {
   const x = (l) => 40 + ((l + lMax) / (2 * lMax)) * (W - 50);
   const yMax = Math.max(0.6, ...pts.map((p) => p.y + (p.u || 0))) * 1.05, y = (m) => H - 25 - (m / yMax) * (H - 35);
   let s = `<rect x="40" y="10" width="${W - 50}" height="${H - 35}" fill="none" stroke="#999"/>`;
-  s += `<text x="${W - 60}" y="${H - 8}">l/a</text><text x="4" y="20">μ</text><text x="4" y="${y(0) + 4}">0</text><text x="4" y="${y(yMax / 1.05) + 4}">${(yMax / 1.05).toFixed(2)}</text>`;
+  s += `<text x="${W - 60}" y="${H - 8}">l/a</text><text x="4" y="${H / 2}">μ</text><text x="4" y="${y(0) + 4}">0</text><text x="4" y="${y(yMax / 1.05) + 4}">${(yMax / 1.05).toFixed(2)}</text>`;
   const tick = lMax > 2 ? Math.ceil(lMax / 2) : 1;
   for (let l = -Math.floor(lMax / tick) * tick; l <= lMax; l += tick) s += `<text x="${x(l) - 4}" y="${H - 10}">${l}</text>`;
   for (const p of pts) {
