@@ -3,7 +3,8 @@
 Only the named effects are built (rig.stands.disc_roller.parameters.EFFECTS); the contact law
 per load (b/a) comes from rig.stands.contact_law.make_contact_law (direct or surrogate table,
 ContactSpec) over the domain the stand needs (l/a within +-rolling_point_limit, c/a of the
-twist range, alpha' from a quarter to four times the point's value), built on first use.
+twist range, alpha' from a quarter to four times the point's value - or of every mu in the range of
+the effect law_mu_range), built on first use.
 """
 
 from __future__ import annotations
@@ -69,6 +70,11 @@ class DiscRollerStand(Stand):
             raise ParameterError("drive", drive, "a rig.stands.base.DriveMode")
         if drive is DriveMode.QUASI_STATIC and "swinging_drive" in self.effects:
             raise ParameterError("drive", drive.value, "dynamic with the swinging drive (it has no steady state)")
+        if "law_mu_range" in self.effects:
+            span = self.effects["law_mu_range"]
+            if not span["mu_low"] <= self.params.mu <= span["mu_high"]:
+                raise ParameterError("mu", self.params.mu, f"[{span['mu_low']:g}, {span['mu_high']:g}], the range "
+                                     "of effects.law_mu_range")
         self.contact = contact
         self.drive = drive
         self.instrument_effects = InstrumentEffects(
@@ -92,8 +98,12 @@ class DiscRollerStand(Stand):
         c_max = p.pivot_distance * math.sin(P.SETTINGS["sigma_rad"].hi) / p.half_length
         alpha = 10.0 * p.mu * b_over_a * p.radius_c / p.roller_radius
         start = alpha * REDUCTION_START.mu_start / p.mu  # alpha' ~ mu: where the reduction's iteration starts
-        return TableDomain((-limit, limit), (-c_max, c_max), (min(alpha / ALPHA_BAND, start / START_MARGIN),
-                                                               max(alpha * ALPHA_BAND, start * START_MARGIN)))
+        low = high = alpha
+        if "law_mu_range" in self.effects:  # laid out for a range of mu, not around the scene's (eq. 21)
+            span = self.effects["law_mu_range"]
+            low, high = (10.0 * span[k] * b_over_a * p.radius_c / p.roller_radius for k in ("mu_low", "mu_high"))
+        return TableDomain((-limit, limit), (-c_max, c_max), (min(low / ALPHA_BAND, start / START_MARGIN),
+                                                               max(high * ALPHA_BAND, start * START_MARGIN)))
 
     def alpha_factor(self, b_over_a: float) -> float:
         """alpha' the contact runs at over eq. (21)'s [1]: 1, or alpha'_paper/alpha'_Hertz with the
