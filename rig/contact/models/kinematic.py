@@ -185,7 +185,7 @@ def solve_grid(grid: Grid, poisson: float, creepage: Creepage, effects: ContactE
     disc = Discretisation(grid, op, effects)
     xc, yc = grid.centres()
     s_g = creepage.field(xc, yc)
-    p = grid.gather(grid.p)
+    p = effects.traction_bound(grid.gather(grid.p))  # mu(p) p/(mu0 p0); p itself unless mu depends on p
     n_cells = p.size
     rho = disc.slip_scale()
     precond = _Preconditioner(disc, rho)
