@@ -12,7 +12,8 @@ switched on one at a time, using the log's truth (the gate means of the true sig
 * everything: the fit `rig fit` makes.
 Then the measured-minus-true F_y is split into the calibration form the fit's common covariance
 describes (a relative sensitivity error and an offset, eq. 33) and the rest, which is regressed
-on the wheel-2 speed. Never imported by rig.
+on the run's own dynamometer drift (rebuilt from the run's seed); and the fit is repeated with
+the drift's random-walk covariance added (docs/fit.md, acceptance 1-2). Never imported by rig.
 """
 
 from __future__ import annotations
@@ -64,16 +65,40 @@ def diagnose(run: Path) -> None:
     rest = error - calibration_form @ np.linalg.lstsq(calibration_form, error, rcond=None)[0]
     common = obs.common_cov
     independent = np.sqrt(np.clip(obs.u**2 - np.diag(common), 0.0, None)) if common is not None else obs.u
-    speed = np.column_stack([calibration_form, truth["omega_2_rad_s"].to_numpy()])
-    after = error - speed @ np.linalg.lstsq(speed, error, rcond=None)[0]
+    drift = drift_path(run, points)
+    with_path = np.column_stack([calibration_form, drift])
+    after = error - with_path @ np.linalg.lstsq(with_path, error, rcond=None)[0]
     print(f"  measured - true F_y/F_N beyond the calibration form: rms {np.sqrt(np.mean(rest**2)):.1e}, "
           f"max {np.abs(rest).max():.1e} (stated independent u: median {np.median(independent):.1e}); "
-          f"with the wheel-2 speed regressed out too: rms {np.sqrt(np.mean(after**2)):.1e}")
+          f"with the run's own drift path regressed out too: rms {np.sqrt(np.mean(after**2)):.1e}")
     for series in np.unique(obs.series):
         at = obs.series == series
         print(f"    {series}: " + " ".join(f"{v:+.1e}" for v in rest[at]))
 
 
+
+
+def drift_path(run: Path, points: np.ndarray) -> np.ndarray:
+    """The run's own zero drift in F_y/F_N units at each point: the dynamometer's seeded random walk
+    (rig.stands.yoke.instruments.dynamometer) averaged over the point's gate, times gain, over S,
+    times the eq. (33) lever, over F_N (the sign as the reduction reads it)."""
+    from rig.logbook.reader import read_calibration, read_metadata
+    from rig.scenes.load import parse_scene
+    from rig.stands.yoke import instruments
+
+    scene = parse_scene(read_metadata(run / "log.h5").scene_toml, name="run", source=str(run))
+    stand = scene.build_stand()
+    p = stand.params
+    amplifier = instruments.dynamometer(scene.effects, scene.seed, scene.seed).amplifier
+    sensitivity = read_calibration(run / "log.h5")["dynamometer_10_sensitivity_V_N"].iloc[0]
+    f_n = read_settings(run / "log.h5").loc[points, "normal_force_N"].to_numpy()
+    gate = scene.procedure.gate_time_s
+    out = []
+    for k, f in zip(points, f_n):
+        t = instruments.calibration_duration_s() + k * p.point_period_s + np.arange(0.0, gate, 1.0 / p.dynamometer_rate_Hz)
+        volts = amplifier.gain * float(np.mean(amplifier.drift.sample(t)))
+        out.append(volts / sensitivity * p.geometry.dynamometer_lever / p.geometry.yoke_lever / f)
+    return np.array(out)
 
 
 def drift_covariance(run: Path, obs: Observations) -> np.ndarray:
