@@ -228,7 +228,7 @@ def solve_grid(grid: Grid, poisson: float, creepage: Creepage, effects: ContactE
     op = influence_operator(grid, poisson)
     disc = Discretisation(grid, op, effects)
     s_g = disc.rigid_slip(creepage)
-    p = grid.gather(grid.p)
+    p = effects.traction_bound(grid.gather(grid.p))  # mu(p) p/(mu0 p0); p itself unless mu depends on p
     n_cells = p.size
     rho = disc.slip_scale()
     precond = _Preconditioner(disc, rho)

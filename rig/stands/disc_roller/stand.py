@@ -76,6 +76,7 @@ class DiscRollerStand(Stand):
                 raise ParameterError("mu", self.params.mu, f"[{span['mu_low']:g}, {span['mu_high']:g}], the range "
                                      "of effects.law_mu_range")
         self.contact = contact
+        self.pressure_exponent = contact.effects.get("pressure_exponent")  # k of mu(p), None = off
         self.drive = drive
         self.instrument_effects = InstrumentEffects(
             noise="recorder_noise" in self.effects, drift="dynamometer_drift" in self.effects,
@@ -91,13 +92,19 @@ class DiscRollerStand(Stand):
         return P.resolve_parameters(parameters).recorder_rate
 
     # ---- components -------------------------------------------------------------------------
+    def friction(self, normal_force: float) -> float:
+        """The mu the contact runs at at this load [1]: the parameter mu, or mu(p0) with a
+        pressure-dependent mu (contact effect pressure_exponent; StandBParameters.friction)."""
+        return self.params.friction(normal_force, self.pressure_exponent)
+
     def law_domain(self, b_over_a: float) -> TableDomain:
         """Canonical (l/a, c/a, alpha') domain the stand evaluates the law in at this b/a (alpha' of eq. 21)."""
         p = self.params
         limit = p.rolling_point_limit
         c_max = p.pivot_distance * math.sin(P.SETTINGS["sigma_rad"].hi) / p.half_length
-        alpha = 10.0 * p.mu * b_over_a * p.radius_c / p.roller_radius
-        start = alpha * REDUCTION_START.mu_start / p.mu  # alpha' ~ mu: where the reduction's iteration starts
+        mu = p.mu if self.pressure_exponent is None else self.friction(p.normal_force_for(b_over_a))
+        alpha = 10.0 * mu * b_over_a * p.radius_c / p.roller_radius
+        start = alpha * REDUCTION_START.mu_start / mu  # alpha' ~ mu: where the reduction's iteration starts
         low = high = alpha
         if "law_mu_range" in self.effects:  # laid out for a range of mu, not around the scene's (eq. 21)
             span = self.effects["law_mu_range"]
@@ -133,9 +140,10 @@ class DiscRollerStand(Stand):
         p = self.params
         b_over_a = p.b_over_a(settings.normal_force)
         domain = self.law_domain(b_over_a)
+        mu = self.friction(settings.normal_force)
         return ContactPoint(
-            law=self.law(b_over_a), normal_force=settings.normal_force, mu=p.mu, a=p.half_length,
-            b=b_over_a * p.half_length, alpha=p.alpha_prime(settings.normal_force), alpha_max=domain.alpha[1],
+            law=self.law(b_over_a), normal_force=settings.normal_force, mu=mu, a=p.half_length,
+            b=b_over_a * p.half_length, alpha=p.alpha_prime(settings.normal_force, mu), alpha_max=domain.alpha[1],
             l_set=settings.l, c=settings.offset_c(p.pivot_distance), radius_c=p.radius_c,
             spin_eps=p.spin_regularisation, l_limit=p.rolling_point_limit,
         )
