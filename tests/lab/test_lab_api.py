@@ -116,7 +116,7 @@ def _malformed_stand_b(sid: str) -> list[tuple[str, str, object, bytes | None]]:
     for name, bad in itertools.product(GOOD_SETTINGS_B, BAD_VALUES):
         cases.append(("POST", f"{s}/controls", {"settings": {name: bad}}, None))
     for name, value in (("normal_force_N", 30.0), ("normal_force_N", 0.0), ("normal_force_N", 200.0),
-                        ("l_m", 0.03), ("l_m", -0.021), ("sigma_rad", 0.3), ("sigma_rad", -0.25), ("speed_step", 0.0),
+                        ("l_m", 0.03), ("l_m", -0.021), ("sigma_rad", 0.2), ("sigma_rad", -0.16), ("speed_step", 0.0),
                         ("speed_step", 2.5), ("speed_step", 4.0), ("direction", 0.0), ("direction", 2.0),
                         ("direction", -0.5), ("delta_h_m", 0.0), ("brake_setpoint_N_m", 0.5), ("sigma", 0.1)):
         cases.append(("POST", f"{s}/controls", {"settings": {name: value}}, None))
