@@ -199,6 +199,25 @@ def test_hidden_values_are_not_sent_before_submission(lab_server):
     assert [row["point"] for row in lab_server.request("GET", f"api/sessions/{sid}")[1]["reduced"]] == [0]
 
 
+def test_stand_b_hidden_values_are_not_sent_before_submission(lab_server):
+    student = "s-hidden-b"
+    mu, _ = ClassFile.load(EXAMPLE_CLASS).get("B1").draw(student)
+    status, state = lab_server.request("POST", "api/sessions", {"stand": "disc_roller", "exercise": "B1",
+                                                                "student": student})
+    assert status == 201
+    sid = state["id"]
+    texts = [json.dumps(state),
+             json.dumps(lab_server.request("POST", f"api/sessions/{sid}/controls", {"settings": {"l_m": -0.01}})[1]),
+             json.dumps(lab_server.request("POST", f"api/sessions/{sid}/record", {"gate_time_s": 1.0})[1]),
+             json.dumps(lab_server.request("POST", f"api/sessions/{sid}/check", {"point": 0, "answers": GOOD_ANSWERS_B})[1]),
+             json.dumps(lab_server.request("GET", f"api/sessions/{sid}")[1]),
+             lab_server.request("GET", f"api/sessions/{sid}/live?ratio=100")[1]]
+    for text in texts:
+        assert repr(mu) not in text and f"{mu:.6f}"[:7] not in text
+        assert "law_mu_range" not in text and "true_" not in text and '"mu"' not in text
+    assert lab_server.request("GET", f"api/sessions/{sid}")[1]["reduced"] == []
+
+
 def test_concurrent_requests_on_one_session_keep_it_consistent(lab_server):
     sid = lab_server.request("POST", "api/sessions", {"stand": "yoke"})[1]["id"]
     statuses = []
