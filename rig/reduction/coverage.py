@@ -32,7 +32,8 @@ def standard_draws(draws: int, normal: int, bounded: tuple[Distribution, ...],
     them: ``normal`` rows of standard normals (drawn as one (draws, normal) block), then one row of
     unit draws on [-1, 1] for each bounded kind in turn."""
     z = rng.standard_normal((draws, normal)) if normal else np.empty((draws, 0))
-    return np.vstack([z.T, *(UNIT_DRAWS[kind](rng, draws) for kind in bounded)])
+    # C order: the products take blocks of columns (np.vstack would keep z.T's Fortran order)
+    return np.ascontiguousarray(np.vstack([z.T, *(UNIT_DRAWS[kind](rng, draws) for kind in bounded)]))
 
 
 @functools.lru_cache(maxsize=8)
@@ -90,8 +91,8 @@ def expanded_uncertainty(propagation: Propagation, probability: float = 0.95, dr
     jac = propagation.jacobian[np.ix_(ok, active)]
     # y - y0 = J (rows.T scale).T: the small product first, then (outputs, draws) rows that hold each
     # output's draws contiguously for the quantile
-    spread = np.abs(_product((np.where(np.isfinite(jac), jac, 0.0) @ scale.T), rows))
-    result[ok] = row_quantiles(spread, p)
+    spread = _product((np.where(np.isfinite(jac), jac, 0.0) @ scale.T), rows)
+    result[ok] = row_quantiles(np.abs(spread, out=spread), p)  # in place: a second 1 MB array costs its page faults
     return result
 
 
