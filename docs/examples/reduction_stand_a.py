@@ -2,8 +2,8 @@
 
 Run from the repository root:  python docs/examples/reduction_stand_a.py
 The readings were produced by forward-simulating stand A with mu = 0.4 at l/a = 0.3 (kinematic
-model, line contact b/a = 1, Poisson ratio 0.3, n = 16), then rounded as the instruments would
-round them (counts are integers, 0.1 mV on the dynamometer, the balance steps by 0.0196 N m).
+model, line contact b/a = 1, Poisson ratio 0.3, n = 16, with the first-order transport the solver
+had until 2026-11), then rounded as the instruments would round them (counts are integers, 0.1 mV on the dynamometer, the balance steps by 0.0196 N m).
 A single reading of a scale with step Delta carries the step's bias as u_step = Delta/sqrt(12)
 (rectangular; rig.reduction.readings.Measured); the counts carry the counters' 1/sqrt(6).
 """

@@ -161,7 +161,7 @@ def alpha_option(stand) -> str:
 def alpha_values(stand, loads) -> str:
     """alpha' the stand's contact runs at per load [1], e.g. '9 N: 10.6, 144 N: 42.6'."""
     p = stand.params
-    return ", ".join(f"{f:g} N: {p.alpha_prime(f) * stand.alpha_factor(p.b_over_a(f)):.1f}" for f in sorted(set(loads)))
+    return ", ".join(f"{f:g} N: {p.alpha_prime(f, stand.friction(f)) * stand.alpha_factor(p.b_over_a(f)):.1f}" for f in sorted(set(loads)))
 
 
 def steady_points(stand, points: pd.DataFrame) -> pd.DataFrame:

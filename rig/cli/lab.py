@@ -1,4 +1,4 @@
-"""``rig lab``: the virtual lab - stand A operated from a web page served on this machine (docs/lab.md).
+"""``rig lab``: the virtual lab - stands A and B operated from a web page served on this machine (docs/lab.md).
 
 Serves the page and its JSON API on --host (default 127.0.0.1) and --port (0: any free port),
 opens the page in the default browser unless --no-browser, and runs until Ctrl-C. The line
@@ -20,7 +20,7 @@ DEFAULT_PORT = 8765
 def add_parser(subparsers) -> None:
     """Register ``rig lab``."""
     parser = subparsers.add_parser("lab", help="the virtual lab: operate the stands from a web page",
-                                   description="Serve the virtual lab (stand A from a web page) until Ctrl-C.")
+                                   description="Serve the virtual lab (stands A and B from a web page) until Ctrl-C.")
     parser.add_argument("--host", default="127.0.0.1", help="address to listen on (default: 127.0.0.1)")
     parser.add_argument("--port", type=int, default=DEFAULT_PORT,
                         help=f"port (default: {DEFAULT_PORT}; 0: any free port)")
@@ -29,6 +29,9 @@ def add_parser(subparsers) -> None:
                         help="a teacher's exercise file (TOML, docs/lab.md)")
     parser.add_argument("-o", "--output", type=Path, default=Path("lab-sessions"), metavar="DIR",
                         help="folder of saved sessions (DIR/<session>/log.h5; default: ./lab-sessions)")
+    parser.add_argument("--state", type=Path, default=None, metavar="DIR",
+                        help="folder the sessions are kept in, so a restarted server gives them back "
+                             "(default: DIR of -o, subfolder state)")
     parser.set_defaults(handler=main)
 
 
@@ -42,7 +45,7 @@ def main(args) -> int:
     logging.getLogger("werkzeug").setLevel(logging.WARNING)  # no line per request on the console
     port = validate.integer("--port", args.port, 0, 65535)
     classfile = None if args.exercises is None else ClassFile.load(args.exercises)
-    app = create_app(Lab(args.output, classfile))
+    app = create_app(Lab(args.output, classfile, args.state))
     try:
         server = make_server(args.host, port, app, threaded=True)
     except (OSError, SystemExit) as error:  # werkzeug reports a taken port by printing and exiting

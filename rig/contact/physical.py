@@ -30,6 +30,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from rig import validate
+from rig.contact.effects.pressure_friction import friction_at_peak_pressure
 from rig.contact.hertz import HertzEllipse, HertzLine, LineGeometry, PointGeometry, hertz_contact
 from rig.contact.materials import (
     Material,
@@ -47,7 +48,7 @@ from rig.errors import ParameterError
 class PhysicalContactResult:
     """Forces, moments and power of one steady rolling contact in SI units.
 
-    force_x_N: F_x [N] across the contact line (peripheral force); force_y_N: F_y [N] along it;
+    force_x_N: F_x [N] across the contact line (peripheral force); mu: the coefficient the contact ran at; force_y_N: F_y [N] along it;
     moment_C_N_m: moment about the rolling point C, T0 = M_C [N m] (z component, signed);
     moment_O_N_m: moment about the contact centre O [N m]; friction_power_W: P_t [W] (eq. 26);
     rolling_resistance_moment_N_m: F_N f [N m] of the rolling-friction length f (0 if that
@@ -63,6 +64,7 @@ class PhysicalContactResult:
     friction_power_W: float
     rolling_resistance_moment_N_m: float
     alpha_prime: float
+    mu: float
     poisson: float
     substitute_modulus_Pa: float
     contact: HertzEllipse | HertzLine
@@ -88,6 +90,7 @@ def rolling_contact(
     c: float,
     l: float,
     n: int | None = None,
+    reference_pressure: float | None = None,
     **effects: float,
 ) -> PhysicalContactResult:
     """Solve one contact given in physical units.
@@ -97,7 +100,10 @@ def rolling_contact(
     driving and the driven body; mu: friction coefficient > 0; speed: rolling speed v [m/s] > 0;
     spin: w0 [rad/s], non-zero, signed; c, l: rolling point [m] (c across, l along the contact
     line); n: cells across 2a for grid models; effects: solve()'s dimensionless effect keywords
-    (psi, static_ratio, inertia_number, rolling_length = f/a), passed through unchanged.
+    (psi, static_ratio, inertia_number, rolling_length = f/a, pressure_exponent), passed through
+    unchanged. With pressure_exponent k, mu is the coefficient at reference_pressure p_ref [Pa]
+    (required then, an error otherwise): the contact runs at mu(p0) = mu (p0/p_ref)^-k, the
+    coefficient at its peak Hertz pressure (rig.contact.effects.pressure_friction).
     """
     m1 = _material("material_1", material_1)
     m2 = _material("material_2", material_2)
@@ -112,6 +118,11 @@ def rolling_contact(
     l = validate.number("l", l)
 
     contact = hertz_contact(normal_force, geometry, contact_modulus(m1, m2))
+    if ("pressure_exponent" in effects) != (reference_pressure is not None):
+        raise ParameterError("reference_pressure", reference_pressure,
+                             "a pressure [Pa] > 0 together with the effect pressure_exponent, None without it")
+    if reference_pressure is not None:
+        mu = friction_at_peak_pressure(mu, contact.p0, reference_pressure, effects["pressure_exponent"])
     modulus = substitute_modulus(m1, m2)
     alpha = track_deformability(mu, contact.p0, speed, contact.a, modulus, spin)
     poisson = combined_poisson(m1, m2)
@@ -140,6 +151,7 @@ def rolling_contact(
         friction_power_W=moment_scale * abs(spin) * result.nu_0,
         rolling_resistance_moment_N_m=force * contact.a * effects.get("rolling_length", 0.0),
         alpha_prime=alpha,
+        mu=mu,
         poisson=poisson,
         substitute_modulus_Pa=modulus,
         contact=contact,

@@ -34,13 +34,17 @@ RIGID_SLIDING_CREEPAGE = 1e12
 DEFAULT_N = 32
 # Revision of the grid models' discretisation; part of every surrogate table's cache key.
 # 2: plastic slip of eq. (25) as a grid-independent slip velocity (docs/contact-model.md).
-DISCRETISATION_REVISION = 2
+# 3: FASTSIM's spin-moment flexibility L4 (fitted to C33).
+# 4: kinematic transport of second order with the edge-corrected row entry (rig.contact.models.kinematic).
+DISCRETISATION_REVISION = 4
 N_RANGE = (4, 512)
 # Effects each model can represent; the others would be silently meaningless, so they are errors.
+# The pressure-dependent mu changes only the traction bound, so every model with one has it; linear
+# theory has none (no sliding): there it would be silently meaningless.
 MODEL_EFFECTS = {
-    "rigid": ("rolling_length",),
+    "rigid": ("rolling_length", "pressure_exponent"),
     "linear": ("rolling_length",),
-    "fastsim": ("rolling_length",),
+    "fastsim": ("rolling_length", "pressure_exponent"),
     "kinematic": tuple(EFFECT_KEYWORDS),
 }
 
@@ -61,7 +65,9 @@ def solve(
 
     alpha: track deformability alpha' of eq. (21) [1], >= 0 (inf allowed); c_over_a, l_over_a:
     rolling point [units of a]; poisson: Poisson ratio [1] in [0, 0.5]; n: cells across 2a
-    (default 32); effects: psi, static_ratio, inertia_number, rolling_length (kinematic model).
+    (default 32); effects: psi, static_ratio, inertia_number, rolling_length, pressure_exponent
+    (kinematic model; MODEL_EFFECTS lists what the others support). With pressure_exponent the
+    friction coefficient of the units (nu = F/(mu F_N), alpha') is mu(p0), at the peak pressure.
     """
     alpha = validate.number("alpha", alpha, 0.0, allow_inf=True)
     c = validate.number("c_over_a", c_over_a)
@@ -125,7 +131,7 @@ def _solve(model, shape, b_over_a, creepage, rolling_point, nu, n, effects, info
     info = dict(info, poisson=nu, n=n, effects=built.names())
 
     if model == "rigid" or (rigid_sliding and model in ("fastsim", "kinematic")):
-        return _rigid(model, shape, beta, n, creepage, info, on_grid=model != "rigid")
+        return _rigid(model, shape, beta, n, creepage, built, info, on_grid=model != "rigid")
     if model == "linear":
         if rigid_sliding:
             raise ParameterError(
@@ -140,8 +146,9 @@ def _solve(model, shape, b_over_a, creepage, rolling_point, nu, n, effects, info
     s_g = creepage.field(xc, yc)
     if model == "fastsim":
         flex = fastsim.flexibility(shape, beta, creep_coefficients(shape, beta, nu), creepage)
-        q = grid.gather(fastsim.march(grid, fastsim.slip_increments(grid, creepage), grid.p, flex))
-        stick = np.hypot(q[0], q[1]) < p * (1.0 - 1e-12)
+        bound = built.traction_bound(grid.p)
+        q = grid.gather(fastsim.march(grid, fastsim.slip_increments(grid, creepage), bound, flex))
+        stick = np.hypot(q[0], q[1]) < grid.gather(bound) * (1.0 - 1e-12)
         slip = np.where(stick, 0.0, s_g)  # FASTSIM's slip direction follows the rigid slip
         info["flexibility"] = flex
     else:
@@ -156,14 +163,14 @@ def _solve(model, shape, b_over_a, creepage, rolling_point, nu, n, effects, info
     return _result(model, shape, beta, xc, yc, q, p, creepage, float(np.mean(stick)), maps, info)
 
 
-def _rigid(model, shape, beta, n, creepage, info, *, on_grid: bool) -> ContactResult:
+def _rigid(model, shape, beta, n, creepage, effects, info, *, on_grid: bool) -> ContactResult:
     if on_grid:  # the grid model's own alpha' = 0 limit, on its cells
         grid = make_grid(shape, beta, n)
         x, y = grid.centres()
         p = grid.gather(grid.p)
     else:
         x, y, p = rigid.sample_points(shape, beta, n)
-    q = rigid.tractions(x, y, p, creepage)
+    q = rigid.tractions(x, y, effects.traction_bound(p), creepage)
     return _result(model, shape, beta, x, y, q, p, creepage, 0.0, None, info)
 
 

@@ -3,7 +3,7 @@
 Each parameter has a valid range (a start value or an interval end outside it is a
 ParameterError), a default start value and its "off" value: the value at which the effect
 computes the same forces as the model without it (psi = 1, static_ratio = 1, inertia_number = 0,
-rolling_length = 0), used for the nested model sets of the model choice. Ranges of the effects
+rolling_length = 0, pressure_exponent = 0), used for the nested model sets of the model choice. Ranges of the effects
 are the fit's search ranges (inside each effect's own valid range, rig.contact.effects).
 """
 
@@ -47,6 +47,8 @@ PARAMETERS: dict[str, FitParameter] = {
         FitParameter("static_ratio", "1", 1.0, 2.0, 1.1, 1.0, "static-to-kinetic friction ratio mu0/mu"),
         FitParameter("inertia_number", "1", 0.0, 1.0, 0.1, 0.0, "surface-inertia number (rig.contact.effects)"),
         FitParameter("rolling_length", "1", -0.5, 0.5, 0.05, 0.0, "rolling-resistance length f/a"),
+        FitParameter("pressure_exponent", "1", 0.0, 1.0, 0.1, 0.0,
+                     "exponent k of a pressure-dependent mu(p) = mu_ref (p/p_ref)^-k (mu: its value at p0)"),
     )
 }
 

@@ -77,6 +77,9 @@ def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=Non
     starts = {p.name: p.start for p in free}
     starts.update(P.check_values(start or {}, "start value of "))
     obs = load_data(data, sidecar=sidecar, sigma=sigma, scene=scene, n=n, effects=fixed_effects, datasets=datasets)
+    if obs.stand is not None and "pressure_exponent" in {p.name for p in free} | set(fixed_effects):
+        raise ParameterError("params", "pressure_exponent", "a parameter of a digitised contact curve: stand A has "
+                             "no pressure-dependent mu (its mu(p0) per load is done for stand B only)")
     free_names = {p.name for p in free}
     if free_names & set(obs.fixed_effects):  # a free parameter is not also fixed by the scene
         obs = Observations(**{**obs.__dict__, "fixed_effects": {

@@ -3,10 +3,12 @@
 Thin by design: each route reads its request (rig.lab.requests), calls the session
 (rig.lab.session), the sheet's judge (rig.lab.sheet) or the exercises (rig.lab.exercises), and
 returns JSON. Bad requests get 400 with ``{"error": message, "field": name}`` (404 for an
-unknown session, 422 for settings at which the stand does not settle), never a 500.
+unknown session, 422 for settings at which the stand does not settle), never a 500. Every change
+of a session is written to the state folder (rig.lab.store), and a session not in memory - the
+server restarted - is rebuilt from there on its first request.
 
     GET  /                               the page (assets under /static, all from this server)
-    GET  /api/stands                     the controls of each stand (names, units, ranges)
+    GET  /api/stands                     the controls of each stand (names, units, ranges, choices)
     GET  /api/exercises                  the teacher's exercises (public part only)
     POST /api/sessions                   {stand, student?, exercise?} -> a new session
     GET  /api/sessions/<id>              the session's state (settings, readings, reduction)
@@ -35,13 +37,16 @@ from werkzeug.exceptions import HTTPException
 from rig import validate
 from rig.errors import ConvergenceError, ParameterError
 from rig.lab import requests as rq
-from rig.lab.exercises import STANDS, ClassFile, Exercise, GradeBook, student_id
+from rig.lab.exercises import ClassFile, Exercise, GradeBook, student_id
 from rig.lab.scene_text import GATE_TIME_S
-from rig.lab.session import GATE_LIMITS_S, SHOWN, STROBE_RATIO_LIMITS, LabSession
-from rig.lab.sheet import OPTIONAL, REQUIRED, judge
-from rig.stands.yoke.parameters import GEOMETRY_FIELDS, PARAMETERS, SETTINGS
+from rig.lab.session import GATE_LIMITS_S, SESSIONS, STROBE_RATIO_LIMITS, LabSession, restore
+from rig.lab.sheet import SHEETS, Sheet, judge
+from rig.lab.store import SessionStore
+from rig.stands.disc_roller.parameters import PARAMETERS as STAND_B_PARAMETERS
+from rig.stands.yoke.parameters import GEOMETRY_FIELDS, PARAMETERS
 
-PRACTICE_MU = (0.3, 0.5)  # range of the hidden mu of a practice session [1]
+PRACTICE_MU = {"yoke": (0.3, 0.5), "disc_roller": (0.6, 0.9)}  # range of the hidden mu of a practice session [1]
+STAND_B_GEOMETRY = ("radius_c_m", "roller_radius_m", "pivot_distance_m", "half_length_m")
 FRAME_S = 0.05  # real time between two frames of the live stream [s]
 RATIO_LIMITS = (0.1, 100.0)  # simulated time / real time of the live stream [1]
 MAX_SESSIONS = 1000
@@ -53,22 +58,25 @@ class UnknownSession(LookupError):
 
 
 class Lab:
-    """The server's state: sessions by id, the teacher's exercises (or None), the grade book, and
-    the folder saved logs go to."""
+    """The server's state: sessions by id, the teacher's exercises (or None), the grade book, the
+    folder saved logs go to and the folder sessions are kept in (default ``out_dir/state``)."""
 
-    def __init__(self, out_dir: Path, classfile: ClassFile | None = None) -> None:
+    def __init__(self, out_dir: Path, classfile: ClassFile | None = None, state_dir: Path | None = None) -> None:
         self.out_dir = Path(out_dir)
         self.classfile = classfile
         self.grades = GradeBook(self.out_dir / GRADES_CSV)
+        self.store = SessionStore(self.out_dir / "state" if state_dir is None else Path(state_dir))
         self.sessions: dict[str, LabSession] = {}
         self.assigned: dict[str, tuple[str, Exercise]] = {}  # session id -> (student id, exercise)
         self.submitted: set[str] = set()  # ids of exercise sessions whose student has submitted
         self._lock = threading.Lock()
+        self._loading = threading.Lock()
 
     def open(self, data: dict) -> LabSession:
         stand = rq.required(data, "stand")
-        if stand not in STANDS:
-            raise ParameterError("stand", stand, f"one of {', '.join(STANDS)} (stand B is not in the lab yet)")
+        if not isinstance(stand, str) or stand not in SESSIONS:
+            raise ParameterError("stand", stand, f"one of {', '.join(SESSIONS)} (stand A: yoke, stand B: disc_roller)")
+        kind = SESSIONS[stand]
         ident = secrets.token_hex(8)
         if "exercise" in data:
             if self.classfile is None:
@@ -79,18 +87,53 @@ class Lab:
             if exercise.stand != stand:
                 raise ParameterError("stand", stand, f"{exercise.stand!r}, the stand of exercise {exercise.id!r}")
             mu, seed = exercise.draw(student)
-            session = LabSession(ident, seed=seed, mu=mu, effects=exercise.effects, free=exercise.free,
-                                 start=exercise.start, description=f"rig lab: exercise {exercise.id}, {student}")
+            session = kind(ident, seed=seed, mu=mu, effects=exercise.effects, free=exercise.free,
+                           start=exercise.start, description=f"rig lab: exercise {exercise.id}, {student}")
         else:
             rng = np.random.default_rng()
-            session = LabSession(ident, seed=int(rng.integers(2**62)), mu=float(rng.uniform(*PRACTICE_MU)))
+            session = kind(ident, seed=int(rng.integers(2**62)), mu=float(rng.uniform(*PRACTICE_MU[stand])))
             student = exercise = None
+        self._keep(session, None if exercise is None else (student, exercise))
+        self.persist(session)
+        return session
+
+    def _keep(self, session: LabSession, assigned: tuple[str, Exercise] | None) -> None:
         with self._lock:
-            if len(self.sessions) >= MAX_SESSIONS:
+            if len(self.sessions) >= MAX_SESSIONS:  # the oldest leaves memory (its state stays on disk)
                 self.assigned.pop(self.sessions.pop(next(iter(self.sessions))).id, None)
-            self.sessions[ident] = session
-            if exercise is not None:
-                self.assigned[ident] = (student, exercise)
+            self.sessions[session.id] = session
+            if assigned is not None:
+                self.assigned[session.id] = assigned
+
+    def persist(self, session: LabSession) -> None:
+        """Write the session's state (call with the session's lock held, after every change)."""
+        state = session.state()
+        assigned = self.assigned.get(session.id)
+        state["student"], state["exercise"] = (None, None) if assigned is None else (assigned[0], assigned[1].id)
+        state["submitted"] = session.id in self.submitted
+        self.store.write(state)
+
+    def _load(self, ident: str) -> LabSession:
+        """Rebuild session ``ident`` from the state folder (the server restarted): UnknownSession if absent."""
+        state = self.store.read(ident)
+        if state is None:
+            raise UnknownSession(ident)
+        assigned = None
+        if state["exercise"] is not None:
+            if self.classfile is None or state["exercise"] not in self.classfile.exercises:
+                raise ParameterError("session", ident, f"a server with the teacher's file of exercise "
+                                     f"{state['exercise']!r} (rig lab --exercises FILE)")
+            assigned = (state["student"], self.classfile.exercises[state["exercise"]])
+        try:
+            session = restore(state)
+        except (KeyError, TypeError, ValueError, AttributeError) as error:
+            if isinstance(error, ParameterError) and error.name != "state.format":
+                raise
+            raise ParameterError("session", ident, f"a readable state file in {self.store.folder} "
+                                 f"({type(error).__name__}: {error})") from None
+        self._keep(session, assigned)
+        if state["submitted"]:
+            self.submitted.add(ident)
         return session
 
     def exercise_of(self, session: LabSession) -> Exercise | None:
@@ -105,9 +148,13 @@ class Lab:
 
     def get(self, ident: str) -> LabSession:
         with self._lock:
-            if ident not in self.sessions:
-                raise UnknownSession(ident)
-            return self.sessions[ident]
+            if ident in self.sessions:
+                return self.sessions[ident]
+        with self._loading:  # one rebuild at a time (a second request for it waits, then finds it)
+            with self._lock:
+                if ident in self.sessions:
+                    return self.sessions[ident]
+            return self._load(ident)
 
 
 def _state(lab: Lab, session: LabSession) -> dict:
@@ -117,28 +164,41 @@ def _state(lab: Lab, session: LabSession) -> dict:
         "settings": session.settings, "free": list(session.free), "strobe_ratio": session.strobe_ratio,
         "settle_s": None if session.transient is None else session.transient.settle_s,
         "readings": [session.readings(k) for k in range(len(session.outcomes))],
-        "reduced": lab.reduced(session),
+        "reduced": lab.reduced(session), "answers": {str(k): v for k, v in session.answers.items()},
         "exercise": None if exercise is None else exercise.public(),
     }
 
 
+def _controls(session: type[LabSession]) -> dict:
+    return {name: {"unit": c.unit, "lo": c.lo, "hi": c.hi, "description": c.description, "choices": list(c.choices)}
+            for name, c in session.CONTROLS.items()}
+
+
 def _controls_spec() -> dict:
-    return {"yoke": {"settings": {name: {"unit": s.unit, "lo": s.lo, "hi": s.hi, "description": s.description}
-                                  for name, s in SETTINGS.items()},
-                     "gate_time_s": {"lo": GATE_LIMITS_S[0], "hi": GATE_LIMITS_S[1], "default": GATE_TIME_S},
-                     "strobe_ratio": {"lo": STROBE_RATIO_LIMITS[0], "hi": STROBE_RATIO_LIMITS[1]},
+    common = {"gate_time_s": {"lo": GATE_LIMITS_S[0], "hi": GATE_LIMITS_S[1]}}
+    spec = {}
+    for stand, session in SESSIONS.items():
+        sheet = SHEETS[stand]
+        spec[stand] = common | {"settings": _controls(session), "outputs": list(session.SHOWN),
+                                "required": list(sheet.required), "optional": list(sheet.optional),
+                                "traces": dict(session.TRACES)}
+        spec[stand]["gate_time_s"] = common["gate_time_s"] | {"default": GATE_TIME_S[stand]}
+    spec["yoke"] |= {"strobe_ratio": {"lo": STROBE_RATIO_LIMITS[0], "hi": STROBE_RATIO_LIMITS[1]},
                      "marks": {"wheel_1": PARAMETERS["marks_1"].default, "wheel_2": PARAMETERS["marks_2"].default},
                      "geometry": {name: {"value": PARAMETERS[name].default, "unit": PARAMETERS[name].unit,
-                                         "source": PARAMETERS[name].source} for name in GEOMETRY_FIELDS},
-                     "outputs": list(SHOWN), "required": list(REQUIRED), "optional": list(OPTIONAL)}}
+                                         "source": PARAMETERS[name].source} for name in GEOMETRY_FIELDS}}
+    spec["disc_roller"]["geometry"] = {
+        name: {"value": STAND_B_PARAMETERS[name].default, "unit": STAND_B_PARAMETERS[name].unit,
+               "source": STAND_B_PARAMETERS[name].source} for name in STAND_B_GEOMETRY}
+    return spec
 
 
-def _answers(value: object, name: str) -> dict[str, float]:
+def _answers(value: object, name: str, sheet: Sheet) -> dict[str, float]:
     if not isinstance(value, dict):
         raise ParameterError(name, value, "a JSON object {output: number}")
     given = {key: v for key, v in value.items() if v is not None}  # an optional value left empty
-    checked = rq.numbers({name: given}, name, REQUIRED + OPTIONAL)
-    for key in REQUIRED:
+    checked = rq.numbers({name: given}, name, sheet.required + sheet.optional)
+    for key in sheet.required:
         if key not in checked:
             raise ParameterError(f"{name}.{key}", "missing", "a number")
     return checked
@@ -169,7 +229,7 @@ def create_app(lab: Lab) -> Flask:
 
     @app.errorhandler(UnknownSession)
     def unknown_session(error: UnknownSession):
-        return jsonify(error=f"no session {error.args[0]!r} (the server restarted?): open a new one",
+        return jsonify(error=f"no session {error.args[0]!r} (none in this server's state folder): open a new one",
                        field="session"), 404
 
     @app.errorhandler(ConvergenceError)
@@ -215,18 +275,17 @@ def create_app(lab: Lab) -> Flask:
         data = body(("settings", "strobe_ratio"))
         if not data:
             raise ParameterError("settings", "missing", "settings and/or strobe_ratio")
-        settings = rq.numbers(data, "settings", SETTINGS) if "settings" in data else None
+        settings = rq.numbers(data, "settings", session.CONTROLS) if "settings" in data else None
         with session.lock:
             if "strobe_ratio" in data:
+                if session.strobe() is None:
+                    raise ParameterError("strobe_ratio", data["strobe_ratio"], "absent: this stand has no stroboscope")
                 session.set_strobe_ratio(rq.number(data, "strobe_ratio"))
             if settings is not None:
-                for name, value in settings.items():  # range errors name the field as the page sent it
-                    spec = SETTINGS[name]
-                    if not spec.lo <= value <= spec.hi:
-                        raise ParameterError(f"settings.{name}", value, f"[{spec.lo:g}, {spec.hi:g}] {spec.unit}")
-                session.set_controls(settings)
+                session.set_controls(session.check_controls(settings))  # errors name settings.<name>
             elif session.transient is None:
                 session.set_controls({})
+            lab.persist(session)
             return jsonify(version=session.version, settings=session.settings, settle_s=session.transient.settle_s)
 
     @app.get("/api/sessions/<ident>/live")
@@ -246,6 +305,7 @@ def create_app(lab: Lab) -> Flask:
         gate = rq.number(body(("gate_time_s",)), "gate_time_s", *GATE_LIMITS_S)
         with session.lock:
             readings = session.record(gate)
+            lab.persist(session)
             return jsonify(readings=readings, reduced=lab.reduced(session), version=session.version)
 
     @app.post("/api/sessions/<ident>/check")
@@ -254,8 +314,11 @@ def create_app(lab: Lab) -> Flask:
         data = body(("point", "answers"))
         with session.lock:
             point = _point(data, session)
-            answers = _answers(rq.required(data, "answers"), "answers")
-            verdict = judge(answers, _reduced_row(session, point))
+            sheet = SHEETS[session.STAND]
+            answers = _answers(rq.required(data, "answers"), "answers", sheet)
+            verdict = judge(answers, _reduced_row(session, point), sheet)
+            session.answers[point] = answers
+            lab.persist(session)
             if not lab.reduced(session):  # an exercise before submission: right or wrong, not the right value
                 for value in verdict["values"].values():
                     value["reduced"] = value["tolerance"] = None
@@ -286,17 +349,18 @@ def create_app(lab: Lab) -> Flask:
                 point = _point(dict(entry), session, f"{where}.")
                 if "values" not in entry:
                     raise ParameterError(f"{where}.values", "missing", "a JSON object {output: number}")
-                answers = _answers(entry["values"], f"{where}.values")
-                verdict = judge(answers, _reduced_row(session, point))
+                answers = _answers(entry["values"], f"{where}.values", SHEETS[session.STAND])
+                verdict = judge(answers, _reduced_row(session, point), SHEETS[session.STAND])
                 truth = session.truth(point)
                 results.append({"point": point, **verdict, "truth": truth})
                 for name, v in verdict["values"].items():
-                    true = truth.get("mu") if name in ("mu_v", "mu_T") else truth.get(name)
+                    true = truth.get("mu") if name.startswith("mu_") else truth.get({"M_C_N_m": "M_C"}.get(name, name))
                     rows.append(dict(point=point, quantity=name, submitted=v["entered"], reduced=v["reduced"],
                                      tolerance=v["tolerance"], true=true, **{"pass": v["ok"]}))
             student, exercise = lab.assigned[session.id]
             lab.grades.submit(student, exercise.id, rows)
             lab.submitted.add(session.id)
+            lab.persist(session)
             return jsonify(results=results)
 
     @app.get("/api/grades.csv")
@@ -315,9 +379,10 @@ def _query_number(text: str) -> float | str:
         return text
 
 
-def _stream(transient, strobe: dict, version: int, ratio: float):
+def _stream(transient, strobe: dict | None, version: int, ratio: float):
     """Server-sent events: frames of the transient paced at ``ratio`` x real time, then 'settled'."""
     t = transient.t
+    strobe = strobe or {"t": [], "phase": [], "drift_marks_s": None}
     flash_t, flash_phase = np.asarray(strobe["t"]), np.asarray(strobe["phase"])
     start = time.monotonic()
     k = 0
@@ -326,8 +391,7 @@ def _stream(transient, strobe: dict, version: int, ratio: float):
         j = max(int(np.searchsorted(t, sim_now, side="right")), k + 1)
         f = int(np.searchsorted(flash_t, t[j - 1], side="right")) - 1
         frame = {"version": version, "ratio": ratio, "settle_s": transient.settle_s,
-                 "t": t[k:j].tolist(), "omega_1": transient.omega_1[k:j].tolist(),
-                 "omega_2": transient.omega_2[k:j].tolist(), "brake_moment": transient.brake_moment[k:j].tolist(),
+                 "t": t[k:j].tolist(), "series": {name: v[k:j].tolist() for name, v in transient.series.items()},
                  "strobe_phase": float(flash_phase[f]) if f >= 0 else None}
         yield f"event: frame\ndata: {json.dumps(frame)}\n\n"
         k = j

@@ -6,8 +6,9 @@ The teacher's file (TOML; example: rig/lab/examples/class.toml, described in doc
     [[exercise]]
     id = "A1"                          # unique, letters/digits/-/_
     title = "..."
-    stand = "yoke"                     # stand A (the only stand the lab operates so far)
+    stand = "yoke"                     # stand A; "disc_roller": stand B
     mu = [0.30, 0.50]                  # the hidden mu is drawn uniformly in this range [1]
+                                       # (stand B: within [0.5, 1.0], the lab's contact tables)
     free = ["brake_setpoint_N_m"]      # controls the student may change
     [exercise.start]                   # settings of the stand when the exercise opens (SI)
     normal_force_N = 96.2
@@ -35,14 +36,16 @@ from pathlib import Path
 
 from rig import validate
 from rig.errors import ParameterError
-from rig.lab.session import LAB_EFFECTS
-from rig.stands.yoke.parameters import PARAMETERS, SETTINGS
+from rig.lab.session import LAB_MU_RANGE_B, SESSIONS
+from rig.stands.disc_roller.stand import DiscRollerStand
 from rig.stands.yoke.stand import YokeStand
 
 FILE_KEYS = ("title", "exercise")
 EXERCISE_KEYS = ("id", "title", "stand", "mu", "free", "start", "effects")
-STANDS = ("yoke",)
-"""Stands the lab operates (stand B, disc_roller, is not in the lab yet: docs/lab.md)."""
+STANDS = {"yoke": YokeStand, "disc_roller": DiscRollerStand}
+"""Stands the lab operates: A (yoke) and B (disc_roller)."""
+MU_RANGE = {"yoke": (YokeStand.PARAMETERS["mu"].lo, YokeStand.PARAMETERS["mu"].hi), "disc_roller": LAB_MU_RANGE_B}
+"""Where an exercise's hidden mu may lie, per stand [1] (stand B: the lab's contact tables)."""
 ID_PATTERN = re.compile(r"[A-Za-z0-9_-]{1,64}")
 GRADE_COLUMNS = ("student", "exercise", "point", "quantity", "submitted", "reduced", "tolerance", "true", "pass")
 
@@ -91,26 +94,26 @@ def _exercise(entry: object, where: str) -> Exercise:
     if not isinstance(ident, str) or not ID_PATTERN.fullmatch(ident):
         raise ParameterError(f"{where}.id", ident, "1-64 letters, digits, '-' or '_'")
     stand = validate.choice(f"{where}.stand", entry["stand"], STANDS)
+    session = SESSIONS[stand]
     mu = entry["mu"]
     if not isinstance(mu, list) or len(mu) != 2:
         raise ParameterError(f"{where}.mu", mu, "[lo, hi]: the range of the hidden mu")
-    spec = PARAMETERS["mu"]
-    lo = validate.number(f"{where}.mu[0]", mu[0], spec.lo, spec.hi)
-    hi = validate.number(f"{where}.mu[1]", mu[1], lo, spec.hi)
+    lo = validate.number(f"{where}.mu[0]", mu[0], *MU_RANGE[stand])
+    hi = validate.number(f"{where}.mu[1]", mu[1], lo, MU_RANGE[stand][1])
     free = entry["free"]
     if not isinstance(free, list) or not all(isinstance(name, str) for name in free):
         raise ParameterError(f"{where}.free", free, "a list of control names")
-    validate.known_keys(f"{where}.free control", free, SETTINGS)
+    settings = STANDS[stand].SETTINGS
+    validate.known_keys(f"{where}.free control", free, settings)
     start = entry.get("start", {})
     if not isinstance(start, dict):
         raise ParameterError(f"{where}.start", start, "a table [exercise.start] of settings")
-    validate.known_keys(f"{where}.start setting", start, SETTINGS)
-    start = {name: validate.number(f"{where}.start.{name}", v, SETTINGS[name].lo, SETTINGS[name].hi)
-             for name, v in start.items()}
+    validate.known_keys(f"{where}.start setting", start, settings)
+    start = session.check_controls(start, f"{where}.start")
     extra = entry.get("effects", {})
     if not isinstance(extra, dict) or not all(isinstance(v, dict) for v in extra.values()):
         raise ParameterError(f"{where}.effects", extra, "tables [exercise.effects.<name>]")
-    effects = YokeStand.resolve_effects(dict(LAB_EFFECTS) | extra)
+    effects = STANDS[stand].resolve_effects(dict(session.EFFECTS) | extra)
     title = entry["title"]
     if not isinstance(title, str):
         raise ParameterError(f"{where}.title", title, "a string")
@@ -151,12 +154,19 @@ class ClassFile:
 class GradeBook:
     """Every submitted value of every student (thread-safe); a resubmission replaces the earlier one.
     With a ``path``, the CSV is rewritten there after every submission (temporary file + rename), so
-    the grades outlive the server."""
+    the grades outlive the server; a restarted server reads it back and keeps adding to it."""
 
     def __init__(self, path: Path | None = None) -> None:
         self.path = path
         self._rows: dict[tuple[str, str], list[dict]] = {}
         self._lock = threading.Lock()
+        if path is not None and path.is_file():
+            try:
+                with open(path, newline="", encoding="utf-8") as handle:
+                    for row in csv.DictReader(handle):
+                        self._rows.setdefault((row["student"], row["exercise"]), []).append(row)
+            except (OSError, KeyError, csv.Error) as error:
+                raise ParameterError("grades", str(path), f"a grade book this lab wrote ({error})") from None
 
     def submit(self, student: str, exercise: str, rows: list[dict]) -> None:
         with self._lock:

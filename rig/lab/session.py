@@ -1,16 +1,22 @@
-"""One student's session at stand A: set the controls, watch it settle, record gates, reduce, save.
+"""One student's session at a stand: set the controls, watch it settle, record gates, reduce, save.
 
 The stand is built from a scene text (rig.lab.scene_text) by rig.scenes, exactly as ``rig run``
 builds it, and stepped with the rig.stands.base contract: ``start_point`` (from the previous
 settings' steady state) -> ``settle`` -> ``gate`` -> ``read``. The settling transient the page
-plays is the same drive train (rig.stands.yoke) integrated again from the point's start over
-the settle time found by ``settle`` plus a short steady tail. The stroboscope view is
-sensors.strobe: disc 14 seen in flashes fired by disc 13's angle times the strobe ratio.
+plays is the same drive train integrated again from the point's start over the settle time
+found by ``settle`` plus a short steady tail. Stand A (:class:`StandASession`, rig.stands.yoke)
+adds the stroboscope view (sensors.strobe: disc 14 seen in flashes fired by disc 13's angle
+times the strobe ratio); stand B (:class:`StandBSession`, rig.stands.disc_roller) shows the
+recorder's three channels.
 
 Recorded points are reduced by the stand's own ``reduce_log`` on a log written with
 rig.logbook.LogWriter - the very file ``save`` writes and ``rig reduce`` reads - so the page's
 reduction and the command line's agree to the last digit. Thread-safe: one lock per session
 (a second tab or a reload talks to the same session; requests are served one at a time).
+
+A session is persisted as its :meth:`LabSession.state` (the scene's inputs and, per recorded
+point, its settings, the settings it started from and its gate time): the stands are pure in
+those arguments, so :func:`restore` replays the points to the same floats (rig.lab.store).
 """
 
 from __future__ import annotations
@@ -21,35 +27,30 @@ import threading
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
+from typing import ClassVar
 
 import numpy as np
 import pandas as pd
 
 from rig import validate
 from rig.errors import ParameterError
-from rig.lab.scene_text import stand_a_scene
+from rig.lab.scene_text import stand_scene
 from rig.logbook import LogWriter, RunMetadata, utc_timestamp
 from rig.scenes.load import parse_scene
-from rig.stands.base import PointOutcome
+from rig.stands.base import PointOutcome, SettingSpec
+from rig.stands.disc_roller import parameters as stand_b
+from rig.stands.disc_roller.instruments import CHANNELS as STAND_B_CHANNELS
 from rig.stands.yoke import integration
 from rig.stands.yoke.instruments import BALANCE, DYNAMOMETER
+from rig.stands.yoke.parameters import SETTINGS as STAND_A_SETTINGS
 from sensors.strobe import StrobeDisc
 
-LAB_EFFECTS: Mapping[str, Mapping[str, float]] = {
-    "drive_compliance": {}, "brake_dynamics": {}, "dynamometer_noise": {}, "balance_noise": {},
-}
-"""Effects of a lab stand A unless an exercise names others: a drive train and brake that settle
-visibly, noisy dynamometer and balance."""
-START: Mapping[str, float] = {"brake_setpoint_N_m": 0.0, "normal_force_N": 96.2, "delta_h_m": 0.0,
-                              "omega_1_set_rad_s": 25.13}
-"""Settings when a session opens (SI; the default scene's operating point without load)."""
 SETTLE_TIMEOUT_S = 30.0  # simulated time allowed to settle [s]
 TAIL_S = 1.0  # steady tail of the played transient after the settle time [s]
 TRACE_POINTS = 400  # most samples of the transient sent to the page
 GATE_LIMITS_S = (0.5, 60.0)  # gate times the lab accepts [s]
 STROBE_RATIO_LIMITS = (0.05, 20.0)  # flash rate / disc-13 mark rate [1]
-SHOWN = ("i_k", "l_over_a", "c_over_a", "nu_T", "nu_v", "mu_v", "mu_T")
-"""Reduced outputs the lab sheet shows and checks (each with u_ and U95_)."""
+STATE_FORMAT = 1  # version of LabSession.state()
 
 
 def _finite(x: object) -> float | None:
@@ -57,33 +58,57 @@ def _finite(x: object) -> float | None:
     return x if math.isfinite(x) else None
 
 
+def _calibrated_channel(record, name: str) -> dict:
+    """A recorded channel as the operator reads it: mean, scatter, samples, converter step, calibration."""
+    volts = np.asarray(record.channels[name].samples, dtype=float)
+    cal = record.calibration[name]
+    return {"mean": float(volts.mean()), "std": float(volts.std()), "samples": int(volts.size),
+            "resolution": cal["reading_resolution"].value, "sensitivity": cal["sensitivity"].value,
+            "offset": cal["offset"].value}
+
+
 @dataclass(frozen=True)
 class Transient:
-    """The settling transient: t [s], speeds [rad/s], brake moment [N m], wheel angles [rad]."""
+    """The settling transient: t [s], named series (units in the stand's TRACES), the wheel angles
+    [rad] where the stand has a stroboscope (else None)."""
 
     settle_s: float
     t: np.ndarray
-    omega_1: np.ndarray
-    omega_2: np.ndarray
-    brake_moment: np.ndarray
-    theta_1: np.ndarray
-    theta_2: np.ndarray
+    series: Mapping[str, np.ndarray]
+    theta_1: np.ndarray | None = None
+    theta_2: np.ndarray | None = None
 
 
 class LabSession:
-    """A session at stand A with friction coefficient ``mu`` [1] (hidden from the page), run ``seed``,
-    the named ``effects`` and the controls ``free`` (setting names the student may change; the
-    others stay at ``start``)."""
+    """A session at one stand with friction coefficient ``mu`` [1] (hidden from the page), run ``seed``,
+    the named ``effects`` (None: the lab's EFFECTS) and the controls ``free`` (setting names the
+    student may change; the others stay at ``start``). Subclasses name the stand and its controls."""
 
-    def __init__(self, session_id: str, *, seed: int, mu: float, effects: Mapping[str, Mapping[str, float]] = LAB_EFFECTS,
+    STAND: ClassVar[str]
+    START: ClassVar[Mapping[str, float]]
+    EFFECTS: ClassVar[Mapping[str, Mapping[str, float]]]
+    CONTROLS: ClassVar[Mapping[str, SettingSpec]]
+    """The lab's controls {name: spec}: the stand's settings, as the lab offers them, and ``direction``."""
+    SHOWN: ClassVar[tuple[str, ...]]
+    """Reduced outputs the lab sheet shows and checks (each with u_ and U95_)."""
+    TRUTH: ClassVar[tuple[str, ...]]
+    """Truth quantities sent after submission."""
+    TRACES: ClassVar[Mapping[str, str]]
+    """Series of the settling transient {name: unit}."""
+
+    def __init__(self, session_id: str, *, seed: int, mu: float, effects: Mapping[str, Mapping[str, float]] | None = None,
                  free: tuple[str, ...] | None = None, start: Mapping[str, float] | None = None,
                  description: str = "rig lab session") -> None:
         self.id = session_id
-        self.start = dict(START) if start is None else dict(START) | dict(start)
-        self.scene_text = stand_a_scene(seed=seed, mu=mu, effects=effects, start=self.start, description=description)
+        self.inputs = {"seed": int(seed), "mu": float(mu), "effects": dict(self.EFFECTS if effects is None else effects),
+                       "free": None if free is None else list(free), "start": None if start is None else dict(start),
+                       "description": description}
+        self.start = dict(self.START) if start is None else dict(self.START) | dict(start)
+        self.scene_text = stand_scene(self.STAND, seed=seed, mu=mu, effects=self.inputs["effects"], start=self.start,
+                                      description=description)
         self.scene = parse_scene(self.scene_text, name="lab", source="rig lab session")
         self.stand = self.scene.build_stand()
-        self.stand.check_settings(self.start)
+        self.check_settings(self.start)
         self.free = tuple(self.stand.SETTINGS) if free is None else tuple(free)
         for name in self.free:
             validate.known_keys("free control", [name], self.stand.SETTINGS)
@@ -94,21 +119,41 @@ class LabSession:
         self.running: dict[str, float] | None = None  # settings of the last settled point (None: at rest)
         self.strobe_ratio = 1.0
         self.outcomes: list[PointOutcome] = []
+        self.points: list[dict] = []  # per recorded point: settings, previous, gate_time_s (replayed by restore)
+        self.answers: dict[int, dict[str, float]] = {}  # the values the student last checked, per point
         self.transient: Transient | None = None
         self._point = None
+        self._previous: dict[str, float] | None = None  # what self._point started from
         self._table: pd.DataFrame | None = None
         self.version = 0
 
     # ------------------------------------------------------------------------------ controls
 
+    @classmethod
+    def check_controls(cls, changes: Mapping[str, float], where: str = "settings") -> dict[str, float]:
+        """``changes`` {control: SI value}, each checked against the lab's range and choices (errors
+        name ``<where>.<control>``)."""
+        for name, value in changes.items():
+            validate.known_keys(where, [name], cls.CONTROLS)
+            spec = cls.CONTROLS[name]
+            value = validate.number(f"{where}.{name}", value)
+            if not spec.lo <= value <= spec.hi:
+                raise ParameterError(f"{where}.{name}", value, f"[{spec.lo:g}, {spec.hi:g}] {spec.unit}")
+            spec.check_choice(f"{where}.{name}", value)
+        return dict(changes)
+
     def set_controls(self, changes: Mapping[str, float]) -> Transient:
         """Apply ``changes`` {setting: SI value} (free controls only), settle, return the transient."""
+        changes = self.check_controls(changes)
         for name in changes:
-            validate.known_keys("control", [name], self.stand.SETTINGS)
             if name not in self.free:
                 raise ParameterError(name, changes[name], f"left at {self.settings[name]:g}: this exercise fixes it "
                                      f"(free controls: {', '.join(self.free)})")
-        return self._settle(self.stand.check_settings(self.settings | dict(changes)))
+        return self._settle(self.check_settings(self.settings | dict(changes)))
+
+    def check_settings(self, settings: Mapping[str, float]) -> dict[str, float]:
+        """A full set of the stand's settings, checked by the stand (named errors); SI floats."""
+        return self.stand.check_settings(settings)
 
     def set_strobe_ratio(self, ratio: float) -> None:
         """The stroboscope's flash rate as a multiple of disc 13's mark rate [1]."""
@@ -118,21 +163,136 @@ class LabSession:
         """Step from the running settings to ``settings`` and settle; the session changes only if it
         settles (SettleTimeoutError otherwise)."""
         point = self.stand.start_point(len(self.outcomes), settings, self.running, self.scene.seed)
+        y0 = self._start_state(point)
         report = point.settle(SETTLE_TIMEOUT_S)
-        self.transient = self._transient(point, report.duration_s)
-        self._point = point
+        self.transient = self._transient(point, y0, report.duration_s)
+        self._point, self._previous = point, self.running
         self.settings = dict(settings)
         self.running = dict(settings)
         self.version += 1
         return self.transient
 
     @staticmethod
-    def _transient(point, settle_s: float) -> Transient:
+    def _start_state(point) -> np.ndarray:
+        """The drive train's state at the point's start (before ``settle`` moves it)."""
+        raise NotImplementedError
+
+    @staticmethod
+    def _transient(point, y0: np.ndarray, settle_s: float) -> Transient:
+        raise NotImplementedError
+
+    def strobe(self) -> dict | None:
+        """The stroboscope view (stand A), or None."""
+        return None
+
+    # ------------------------------------------------------------------------------ gate
+
+    def record(self, gate_time_s: float) -> dict:
+        """Open the gate for ``gate_time_s`` [s] at the settled state, read the instruments, keep the
+        point; returns its readings."""
+        gate_time = validate.number("gate_time_s", gate_time_s, *GATE_LIMITS_S)
+        if self._point is None:
+            self._settle(self.settings)  # first gate, or a second gate at the same settings: a new point
+        point, self._point = self._point, None
+        outcome = point.read(point.gate(gate_time))
+        self.outcomes.append(outcome)
+        self.points.append({"settings": dict(self.settings), "previous": self._previous, "gate_time_s": gate_time})
+        self._table = None
+        self.version += 1
+        return self.readings(len(self.outcomes) - 1)
+
+    def readings(self, index: int) -> dict:
+        """What the operator reads off the instruments for point ``index`` (SI units)."""
+        raise NotImplementedError
+
+    # ------------------------------------------------------------------------------ reduction
+
+    def _write_log(self, path: Path) -> Path:
+        writer = LogWriter(path, RunMetadata(self.scene_text, self.scene.seed, self.scene.stand, self.created))
+        for outcome in self.outcomes:
+            writer.write_point(outcome.record, outcome.truth)
+        return writer.finalize()
+
+    def table(self) -> pd.DataFrame:
+        """The stand's reduction of the recorded points, as ``rig reduce`` computes it."""
+        if self._table is None:
+            if not self.outcomes:
+                raise ParameterError("point", "none recorded", "record a gate first")
+            with tempfile.TemporaryDirectory(prefix="rig-lab-") as folder:
+                path = self._write_log(Path(folder) / "log.h5")
+                self._table = self.stand.reduce_log(path, self.scene.contact)
+        return self._table
+
+    def reduced(self) -> list[dict]:
+        """The reduction without any truth: per point, SHOWN outputs with u_ and U95_ (None = not reducible)."""
+        if not self.outcomes:
+            return []
+        table = self.table()
+        rows = []
+        for index, row in table.iterrows():
+            values = {f"{prefix}{name}": _finite(row[f"{prefix}{name}"]) for name in self.SHOWN
+                      for prefix in ("", "u_", "U95_")}
+            reason = row.get("reason")
+            rows.append({"point": int(index), "values": values, "reason": reason if isinstance(reason, str) else ""})
+        return rows
+
+    def truth(self, index: int) -> dict[str, float]:
+        """The simulation's truth of point ``index`` (sent only after the student submits)."""
+        truth = self.outcomes[index].truth
+        return {name: truth[name].value for name in self.TRUTH if name in truth}
+
+    def save(self, folder: Path) -> Path:
+        """Write the session as ``folder/log.h5`` (the format of ``rig run``; ``rig reduce`` reads it)."""
+        if not self.outcomes:
+            raise ParameterError("point", "none recorded", "record a gate before saving")
+        folder.mkdir(parents=True, exist_ok=True)
+        return self._write_log(folder / "log.h5")
+
+    # ------------------------------------------------------------------------------ persistence
+
+    def state(self) -> dict:
+        """Everything needed to rebuild this session (JSON-able; hidden values included: server side only)."""
+        return {"format": STATE_FORMAT, "id": self.id, "stand": self.STAND, **self.inputs, "created": self.created,
+                "settings": self.settings, "running": self.running, "strobe_ratio": self.strobe_ratio,
+                "points": self.points, "answers": {str(k): v for k, v in self.answers.items()},
+                "pending": None if self._point is None else {"previous": self._previous},
+                "version": self.version}
+
+
+class StandASession(LabSession):
+    """Stand A (the yoke/spring stand, rig.stands.yoke) with the stroboscope."""
+
+    STAND = "yoke"
+    START = {"brake_setpoint_N_m": 0.0, "normal_force_N": 96.2, "delta_h_m": 0.0, "omega_1_set_rad_s": 25.13}
+    """Settings when a session opens (SI; the default scene's operating point without load)."""
+    EFFECTS = {"drive_compliance": {}, "brake_dynamics": {}, "dynamometer_noise": {}, "balance_noise": {}}
+    """Effects of a lab stand A unless an exercise names others: a drive train and brake that settle
+    visibly, noisy dynamometer and balance."""
+    CONTROLS = dict(STAND_A_SETTINGS) | {"direction": SettingSpec(
+        "1", -1.0, 1.0, "+1: stand A's model runs forward only (docs/stand-a.md section 2, 'rolling direction': "
+        "wheel 1 never reverses and the contact uses |v|, so a reversed drive would give wrong numbers, not a "
+        "mirrored stand); stand B runs both ways", (1.0,))}
+    SHOWN = ("i_k", "l_over_a", "c_over_a", "nu_T", "nu_v", "mu_v", "mu_T")
+    TRUTH = ("mu", "l_over_a", "c_over_a", "i_k")
+    TRACES = {"omega_1": "rad/s", "omega_2": "rad/s", "brake_moment": "N m"}
+
+    def set_controls(self, changes: Mapping[str, float]) -> Transient:
+        changes = dict(self.check_controls(changes))
+        changes.pop("direction", None)  # forward, the only value check_controls lets through
+        return super().set_controls(changes)
+
+    @staticmethod
+    def _start_state(point) -> np.ndarray:
+        return point.y0
+
+    @staticmethod
+    def _transient(point, y0: np.ndarray, settle_s: float) -> Transient:
         train = point.train
-        t, y = integration.gate(train, 0.0, point.y0, settle_s + TAIL_S, point.stand.params.ode_tolerance_factor)
+        t, y = integration.gate(train, 0.0, y0, settle_s + TAIL_S, point.stand.params.ode_tolerance_factor)
         theta_1, theta_2 = train.angles(t, y)
-        return Transient(settle_s, t, np.asarray(train.omega_1(t, y), dtype=float), np.asarray(y[2], dtype=float),
-                         np.asarray(train.brake_moment(t, y), dtype=float), np.asarray(theta_1), np.asarray(theta_2))
+        series = {"omega_1": np.asarray(train.omega_1(t, y), dtype=float), "omega_2": np.asarray(y[2], dtype=float),
+                  "brake_moment": np.asarray(train.brake_moment(t, y), dtype=float)}
+        return Transient(settle_s, t, series, np.asarray(theta_1), np.asarray(theta_2))
 
     def strobe(self) -> dict:
         """Disc 14 as the operator sees it: flash instants [s], the apparent position of its marks
@@ -154,27 +314,10 @@ class LabSession:
         every = max(1, flashes.size // TRACE_POINTS)
         return {"t": flashes[::every].tolist(), "phase": np.mod(u2[::every], 1.0).tolist(), "drift_marks_s": drift}
 
-    # ------------------------------------------------------------------------------ gate
-
-    def record(self, gate_time_s: float) -> dict:
-        """Open the common gate for ``gate_time_s`` [s] at the settled state, read the instruments,
-        keep the point; returns its readings."""
-        gate_time = validate.number("gate_time_s", gate_time_s, *GATE_LIMITS_S)
-        if self._point is None:
-            self._settle(self.settings)  # first gate, or a second gate at the same settings: a new point
-        point, self._point = self._point, None
-        outcome = point.read(point.gate(gate_time))
-        self.outcomes.append(outcome)
-        self._table = None
-        self.version += 1
-        return self.readings(len(self.outcomes) - 1)
-
     def readings(self, index: int) -> dict:
-        """What the operator reads off the instruments for point ``index`` (SI units)."""
         record = self.outcomes[index].record
         counters = record.counters
-        cal = record.calibration[DYNAMOMETER]
-        dyn = np.asarray(record.channels[DYNAMOMETER].samples, dtype=float)
+        dynamometer = _calibrated_channel(record, DYNAMOMETER)
         balance = np.asarray(record.channels[BALANCE].samples, dtype=float)
         return {
             "point": record.index,
@@ -182,53 +325,93 @@ class LabSession:
             "gate_time_s": counters.gate_time_s,
             "counts": {name: c.count for name, c in counters.counters.items()},
             "marks": {name: c.marks_per_rev for name, c in counters.counters.items()},
-            "dynamometer_V": {"mean": float(dyn.mean()), "std": float(dyn.std()), "samples": int(dyn.size),
-                              "resolution": cal["reading_resolution"].value},
-            "calibration": {"sensitivity_V_per_N": cal["sensitivity"].value, "offset_V": cal["offset"].value},
+            "dynamometer_V": {k: dynamometer[k] for k in ("mean", "std", "samples", "resolution")},
+            "calibration": {"sensitivity_V_per_N": dynamometer["sensitivity"], "offset_V": dynamometer["offset"]},
             "balance_N_m": {"readings": balance.tolist(), "T2": record.readings["T2"].value,
                             "resolution": record.readings["balance_resolution"].value},
         }
 
-    # ------------------------------------------------------------------------------ reduction
 
-    def _write_log(self, path: Path) -> Path:
-        writer = LogWriter(path, RunMetadata(self.scene_text, self.scene.seed, self.scene.stand, self.created))
-        for outcome in self.outcomes:
-            writer.write_point(outcome.record, outcome.truth)
-        return writer.finalize()
+DEAD_WEIGHTS_N = (9.0, 21.0, 36.0, 144.0)
+"""The loads of the text (seed 000 3.2): the lab's stand B offers these dead weights (one contact
+table each, built once and cached)."""
+LAB_MU_RANGE_B = (0.5, 1.0)
+"""The hidden mu of a stand-B session lies here (the lab's law_mu_range: one table per load) [1]."""
 
-    def table(self) -> pd.DataFrame:
-        """The stand's reduction (eqs. 29-35) of the recorded points, as ``rig reduce`` computes it."""
-        if self._table is None:
-            if not self.outcomes:
-                raise ParameterError("point", "none recorded", "record a gate first")
-            with tempfile.TemporaryDirectory(prefix="rig-lab-") as folder:
-                path = self._write_log(Path(folder) / "log.h5")
-                self._table = self.stand.reduce_log(path, self.scene.contact)
-        return self._table
 
-    def reduced(self) -> list[dict]:
-        """The reduction without any truth: per point, SHOWN outputs with u_ and U95_ (None = not reducible)."""
-        if not self.outcomes:
-            return []
-        table = self.table()
-        rows = []
-        for index, row in table.iterrows():
-            values = {f"{prefix}{name}": _finite(row[f"{prefix}{name}"]) for name in SHOWN
-                      for prefix in ("", "u_", "U95_")}
-            reason = row.get("reason")
-            rows.append({"point": int(index), "values": values, "reason": reason if isinstance(reason, str) else ""})
-        return rows
+class StandBSession(LabSession):
+    """Stand B (the disc-roller stand, rig.stands.disc_roller) with the recorder's three channels."""
 
-    def truth(self, index: int) -> dict[str, float]:
-        """The simulation's truth of point ``index`` (sent only after the student submits)."""
-        truth = self.outcomes[index].truth
-        return {name: truth[name].value for name in ("mu", "l_over_a", "c_over_a", "i_k") if name in truth}
+    STAND = "disc_roller"
+    START = {"normal_force_N": 36.0, "l_m": 0.01, "sigma_rad": 0.0, "speed_step": 1.0, "direction": 1.0}
+    """Settings when a session opens (SI): 36 N, the roller at l = 10 mm, no twist, 24 rpm, forward."""
+    EFFECTS = {"loop_compliance": {}, "recorder_noise": {}, "calibration_weight_errors": {},
+               "law_mu_range": {"mu_low": LAB_MU_RANGE_B[0], "mu_high": LAB_MU_RANGE_B[1]}}
+    """fig14's effects (the momentometer's torsion: a loop that settles visibly; bridge noise; weight
+    errors) and the lab's table range of mu."""
+    CONTROLS = dict(stand_b.SETTINGS) | {
+        "normal_force_N": SettingSpec("N", DEAD_WEIGHTS_N[0], DEAD_WEIGHTS_N[-1],
+                                      "the dead weights of the text (9, 21, 36, 144 N)", DEAD_WEIGHTS_N),
+        "l_m": SettingSpec("m", -0.02, 0.02, "roller position l by the handwheel (screw 19), text: 0...+-20 mm"),
+    }
+    SHOWN = ("l_over_a", "c_over_a", "M_C_N_m", "nu_T", "nu_v", "nu_0", "mu_v", "mu_T", "mu_M")
+    TRUTH = ("mu", "l_over_a", "c_over_a", "M_C")
+    TRACES = {"roller_speed": "rad/s", "disc_speed": "rad/s", "F_T": "N", "F_V": "N", "T_Mo": "N m"}
 
-    def save(self, folder: Path) -> Path:
-        """Write the session as ``folder/log.h5`` (the format of ``rig run``; ``rig reduce`` reads it)."""
-        if not self.outcomes:
-            raise ParameterError("point", "none recorded", "record a gate before saving")
-        folder.mkdir(parents=True, exist_ok=True)
-        return self._write_log(folder / "log.h5")
+    def check_settings(self, settings: Mapping[str, float]) -> dict[str, float]:
+        stand_b.point_settings(settings)
+        return {name: float(value) for name, value in settings.items()}
 
+    @staticmethod
+    def _start_state(point) -> np.ndarray:
+        return np.array(point.y, dtype=float)
+
+    @staticmethod
+    def _transient(point, y0: np.ndarray, settle_s: float) -> Transient:
+        end = settle_s + TAIL_S
+        t = np.linspace(0.0, end, int(end * 200) + 1)  # 200 samples a second
+        out = point.train.evaluate(t, point.integrator.run(0.0, end, y0, dense=True).sol(t))
+        names = {"roller_speed": "roller_speed", "disc_speed": "disc_speed", "F_T": "force_x", "F_V": "force_y",
+                 "T_Mo": "momentometer_torque"}  # as rig.stands.disc_roller.simulation's gate signals
+        return Transient(settle_s, t, {name: np.asarray(out[key], dtype=float) for name, key in names.items()})
+
+    def readings(self, index: int) -> dict:
+        record = self.outcomes[index].record
+        channels = {name: _calibrated_channel(record, name) for name in STAND_B_CHANNELS}
+        first = record.channels["F_T"]
+        return {
+            "point": record.index,
+            "settings": {name: q.value for name, q in record.settings.items()},
+            "gate_time_s": (channels["F_T"]["samples"] - 1) / first.sample_rate_Hz,
+            "recorder_V": channels,
+            "units": dict(STAND_B_CHANNELS),
+        }
+
+
+SESSIONS: Mapping[str, type[LabSession]] = {"yoke": StandASession, "disc_roller": StandBSession}
+"""Session class of each stand the lab operates."""
+
+
+def restore(state: Mapping[str, object]) -> LabSession:
+    """Rebuild a session from its :meth:`LabSession.state`: the same scene, and every recorded point
+    replayed from its start settings (the stands are pure in them: the same floats)."""
+    if state.get("format") != STATE_FORMAT:
+        raise ParameterError("state.format", state.get("format"), f"{STATE_FORMAT}")
+    cls = SESSIONS[state["stand"]]
+    free = state["free"]
+    session = cls(state["id"], seed=state["seed"], mu=state["mu"], effects=state["effects"],
+                  free=None if free is None else tuple(free), start=state["start"], description=state["description"])
+    session.created = state["created"]
+    for point in state["points"]:
+        session.settings, session.running = dict(point["settings"]), point["previous"]
+        session._settle(session.settings)
+        session.record(point["gate_time_s"])
+    session.settings, session.running = dict(state["settings"]), state["running"]
+    session.transient, session._point = None, None
+    if state["pending"] is not None:  # settled at these settings after the last gate: the same point again
+        session.running = state["pending"]["previous"]
+        session._settle(session.settings)
+    session.strobe_ratio = state["strobe_ratio"]
+    session.answers = {int(k): dict(v) for k, v in state["answers"].items()}
+    session.version = state["version"]
+    return session

@@ -13,6 +13,7 @@ from __future__ import annotations
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -52,16 +53,27 @@ class LabServer:
             status, text, kind = error.code, error.read().decode(), error.headers.get_content_type()
         return status, json.loads(text) if kind == "application/json" else text
 
+    def stop(self) -> None:
+        """Stop the server as Ctrl-C does."""
+        self.process.send_signal(signal.SIGINT)
+        self.process.communicate(timeout=10)
+
 
 @pytest.fixture(scope="session")
 def lab_server(tmp_path_factory):
     """``rig lab --no-browser --port 0`` with the example class, started once for the lab tests."""
-    out_dir = tmp_path_factory.mktemp("lab-sessions")
-    command = [sys.executable, "-m", "rig", "lab", "--no-browser", "--port", "0", "-o", str(out_dir),
-               "--exercises", str(EXAMPLE_CLASS)]
+    server = start_server(tmp_path_factory.mktemp("lab-sessions"), "--exercises", str(EXAMPLE_CLASS))
+    warm_up(server)
+    yield server
+    server.stop()
+
+
+def start_server(out_dir: Path, *extra: str) -> LabServer:
+    """``rig lab --no-browser --port 0 -o OUT_DIR`` (and ``extra`` options), serving."""
+    command = [sys.executable, "-m", "rig", "lab", "--no-browser", "--port", "0", "-o", str(out_dir), *extra]
     errors = out_dir / "stderr.txt"
     start = time.monotonic()
-    with open(errors, "w") as stderr:
+    with open(errors, "a") as stderr:
         process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=stderr, text=True)
     line = process.stdout.readline()
     if "serving http://" not in line:
@@ -71,14 +83,17 @@ def lab_server(tmp_path_factory):
     url = line.split("serving ")[1].split()[0]
     with urllib.request.urlopen(url, timeout=START_LIMIT_S) as response:
         assert response.status == 200
-    server = LabServer(process, url, out_dir, time.monotonic() - start)
-    # The first settle builds stand A's contact table (about 20 s on a busy 2-core machine when the
-    # disk cache is cold, then cached): done here, so that no test's timeout pays for it.
-    sid = server.request("POST", "api/sessions", {"stand": "yoke"}, timeout_s=WARM_UP_S)[1]["id"]
-    assert server.request("POST", f"api/sessions/{sid}/controls", {"strobe_ratio": 1.0}, timeout_s=WARM_UP_S)[0] == 200
-    yield server
-    process.terminate()
-    process.communicate(timeout=10)
+    return LabServer(process, url, out_dir, time.monotonic() - start)
+
+
+def warm_up(server: LabServer) -> None:
+    """The first settle of each stand builds its contact table (stand A: about 20 s on a busy 2-core
+    machine when the disk cache is cold; stand B: one table for the 36 N dead weight, about 25 s;
+    then cached): done here, so that no test's timeout pays for it."""
+    for stand in ("yoke", "disc_roller"):
+        sid = server.request("POST", "api/sessions", {"stand": stand}, timeout_s=WARM_UP_S)[1]["id"]
+        status, answer = server.request("POST", f"api/sessions/{sid}/controls", {"settings": {}}, timeout_s=WARM_UP_S)
+        assert status == 200, answer
 
 
 def _chromium_missing() -> str | None:

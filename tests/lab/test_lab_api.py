@@ -14,6 +14,8 @@ from tests.lab.conftest import EXAMPLE_CLASS
 
 GOOD_SETTINGS = {"brake_setpoint_N_m": 0.5, "normal_force_N": 96.2, "delta_h_m": 0.0, "omega_1_set_rad_s": 25.13}
 GOOD_ANSWERS = {"l_over_a": 0.1, "c_over_a": 0.0, "mu_v": 0.4, "mu_T": 0.4}
+GOOD_SETTINGS_B = {"normal_force_N": 36.0, "l_m": 0.01, "sigma_rad": 0.0, "speed_step": 1.0, "direction": 1.0}
+GOOD_ANSWERS_B = {"l_over_a": 2.5, "c_over_a": 0.0, "mu_v": 0.7}
 BAD_VALUES = ("text", None, True, [1], {"x": 1}, float("nan"), float("inf"), -float("inf"), 1e300, -1e300)
 
 
@@ -22,6 +24,15 @@ def session(lab_server) -> str:
     """A practice session with one recorded point."""
     status, state = lab_server.request("POST", "api/sessions", {"stand": "yoke"})
     assert status == 201
+    assert lab_server.request("POST", f"api/sessions/{state['id']}/record", {"gate_time_s": 1.0})[0] == 200
+    return state["id"]
+
+
+@pytest.fixture(scope="module")
+def session_b(lab_server) -> str:
+    """A stand-B practice session with one recorded point."""
+    status, state = lab_server.request("POST", "api/sessions", {"stand": "disc_roller"})
+    assert status == 201 and state["settings"] == GOOD_SETTINGS_B
     assert lab_server.request("POST", f"api/sessions/{state['id']}/record", {"gate_time_s": 1.0})[0] == 200
     return state["id"]
 
@@ -40,7 +51,7 @@ def _malformed(sid: str, esid: str) -> list[tuple[str, str, object, bytes | None
     s, e = f"api/sessions/{sid}", f"api/sessions/{esid}"
     cases: list[tuple[str, str, object, bytes | None]] = []
     # unknown stand, student, exercise; wrong body types
-    for stand in ("disc", "Yoke", "", 3, None, "disc_roller"):
+    for stand in ("disc", "Yoke", "", 3, None, "disc roller", ["yoke"]):
         cases.append(("POST", "api/sessions", {"stand": stand}, None))
     cases += [("POST", "api/sessions", {}, None), ("POST", "api/sessions", {"stand": "yoke", "colour": 1}, None),
               ("POST", "api/sessions", {"stand": "yoke", "exercise": "A9", "student": "s1"}, None),
@@ -55,7 +66,8 @@ def _malformed(sid: str, esid: str) -> list[tuple[str, str, object, bytes | None
         cases.append(("POST", f"{s}/controls", {"settings": {name: bad}}, None))
     for name, value in (("brake_setpoint_N_m", 9.0), ("normal_force_N", 5.0), ("normal_force_N", 501.0),
                         ("delta_h_m", -1e-3), ("delta_h_m", 0.01), ("omega_1_set_rad_s", 0.0),
-                        ("omega_1_set_rad_s", 100.0), ("brake_set_point", 0.1), ("mu", 0.3)):
+                        ("omega_1_set_rad_s", 100.0), ("brake_set_point", 0.1), ("mu", 0.3),
+                        ("direction", -1.0), ("direction", 0.0), ("l_m", 0.01)):
         cases.append(("POST", f"{s}/controls", {"settings": {name: value}}, None))
     cases += [("POST", f"{s}/controls", {}, None), ("POST", f"{s}/controls", {"settings": [0.5]}, None),
               ("POST", f"{s}/controls", {"strobe_ratio": 0.0}, None),
@@ -97,9 +109,37 @@ def _malformed(sid: str, esid: str) -> list[tuple[str, str, object, bytes | None
     return cases
 
 
-def test_200_malformed_requests_get_4xx_naming_the_field_and_the_server_still_answers(lab_server, session, exercise_session):
+def _malformed_stand_b(sid: str) -> list[tuple[str, str, object, bytes | None]]:
+    """Requests to a stand-B session a server must refuse with a 4xx."""
+    s = f"api/sessions/{sid}"
+    cases: list[tuple[str, str, object, bytes | None]] = []
+    for name, bad in itertools.product(GOOD_SETTINGS_B, BAD_VALUES):
+        cases.append(("POST", f"{s}/controls", {"settings": {name: bad}}, None))
+    for name, value in (("normal_force_N", 30.0), ("normal_force_N", 0.0), ("normal_force_N", 200.0),
+                        ("l_m", 0.03), ("l_m", -0.021), ("sigma_rad", 0.3), ("sigma_rad", -0.25), ("speed_step", 0.0),
+                        ("speed_step", 2.5), ("speed_step", 4.0), ("direction", 0.0), ("direction", 2.0),
+                        ("direction", -0.5), ("delta_h_m", 0.0), ("brake_setpoint_N_m", 0.5), ("sigma", 0.1)):
+        cases.append(("POST", f"{s}/controls", {"settings": {name: value}}, None))
+    cases += [("POST", f"{s}/controls", {"strobe_ratio": 1.0}, None),
+              ("POST", f"{s}/controls", {"settings": GOOD_SETTINGS_B, "strobe_ratio": 2.0}, None)]
+    for name, bad in itertools.product(GOOD_ANSWERS_B, ("x", True, [0.1], float("nan"), float("inf"))):
+        cases.append(("POST", f"{s}/check", {"point": 0, "answers": GOOD_ANSWERS_B | {name: bad}}, None))
+    for name in GOOD_ANSWERS_B:
+        cases.append(("POST", f"{s}/check", {"point": 0, "answers": {k: v for k, v in GOOD_ANSWERS_B.items() if k != name}},
+                      None))
+    cases += [("POST", f"{s}/check", {"point": 0, "answers": GOOD_ANSWERS_B | {"i_k": 0.8}}, None),
+              ("POST", f"{s}/check", {"point": 1, "answers": GOOD_ANSWERS_B}, None),
+              ("POST", f"{s}/record", {"gate_time_s": 100.0}, None)]
+    return cases
+
+
+def test_200_malformed_requests_get_4xx_naming_the_field_and_the_server_still_answers(lab_server, session, exercise_session,
+                                                                                      session_b):
     cases = _malformed(session, exercise_session)
     assert len(cases) >= 200
+    cases_b = _malformed_stand_b(session_b)
+    assert len(cases_b) >= 80
+    cases += cases_b
     for method, path, body, raw in cases:
         data = raw if raw is not None else (None if body is None else json.dumps(body).encode())  # NaN as Python writes it
         status, answer = lab_server.request(method, path, raw=data)
@@ -111,13 +151,16 @@ def test_200_malformed_requests_get_4xx_naming_the_field_and_the_server_still_an
     status, state = lab_server.request("GET", f"api/sessions/{session}")
     assert status == 200 and len(state["readings"]) == 1
     assert lab_server.request("GET", f"api/sessions/{exercise_session}")[0] == 200
+    status, state = lab_server.request("GET", f"api/sessions/{session_b}")
+    assert status == 200 and len(state["readings"]) == 1 and state["settings"] == GOOD_SETTINGS_B
     assert lab_server.request("GET", "")[0] == 200
     assert lab_server.process.poll() is None
 
 
 def test_errors_name_the_exact_field(lab_server, session):
     named = {
-        ("POST", "api/sessions", json.dumps({"stand": "disc_roller"})): "stand",
+        ("POST", "api/sessions", json.dumps({"stand": "disc"})): "stand",
+        ("POST", f"api/sessions/{session}/controls", json.dumps({"settings": {"direction": -1}})): "settings.direction",
         ("POST", f"api/sessions/{session}/controls", json.dumps({"settings": {"normal_force_N": 1e6}})):
             "settings.normal_force_N",
         ("POST", f"api/sessions/{session}/controls", '{"settings": {"delta_h_m": NaN}}'): "settings.delta_h_m",

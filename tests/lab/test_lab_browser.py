@@ -10,6 +10,7 @@ import csv
 from pathlib import Path
 
 import pytest
+from selenium.common.exceptions import TimeoutException
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select, WebDriverWait
 
@@ -42,13 +43,18 @@ def _open(driver, url: str) -> None:
 
 
 def _settled(driver) -> None:
-    _wait(driver, lambda d: _attr(d, "status", "data-state") == "settled")
+    try:
+        _wait(driver, lambda d: _attr(d, "status", "data-state") == "settled")
+    except TimeoutException:
+        shown = {i: driver.find_element(By.ID, i).text for i in ("status", "control-error", "exercise-info", "session-info")}
+        raise AssertionError(f"not settled within {WAIT_S:g} s: {shown}") from None
 
 
 def _apply(driver, **values: str) -> None:
     for element_id, text in values.items():
         _type(driver, element_id, text)
-    driver.find_element(By.ID, "apply").click()
+    stand_b = driver.find_element(By.TAG_NAME, "body").get_attribute("data-stand") == "disc_roller"
+    driver.find_element(By.ID, "apply-b" if stand_b else "apply").click()
     _wait(driver, lambda d: _attr(d, "status", "data-state") == "settling")
     _settled(driver)
 
@@ -61,9 +67,9 @@ def _record(driver, gate_s: str = "4") -> int:
     return before
 
 
-def _check(driver, point: int, answers: dict[str, float | None]) -> str:
+def _check(driver, point: int, answers: dict[str, float | None], outputs: tuple[str, ...] = OUTPUTS) -> str:
     Select(driver.find_element(By.ID, "answer-point")).select_by_value(str(point))
-    values = {f"ans-{name}": "" if answers.get(name) is None else repr(answers[name]) for name in OUTPUTS}
+    values = {f"ans-{name}": "" if answers.get(name) is None else repr(answers[name]) for name in outputs}
     driver.execute_script("for (const [id, v] of Object.entries(arguments[0])) document.getElementById(id).value = v",
                           values)  # typed at once: send_keys, key by key, costs seconds per check
     driver.execute_script("document.getElementById('verdict').dataset.result = ''")

@@ -54,7 +54,15 @@ def test_a_students_hidden_mu_is_reproducible_and_inside_the_range():
 
 @pytest.mark.parametrize("text, field", [
     ('title = "x"\n', "exercise"),
-    ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "disc_roller"\nmu = [0.3, 0.4]\nfree = []\n', "exercise[0].stand"),
+    ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "disc"\nmu = [0.3, 0.4]\nfree = []\n', "exercise[0].stand"),
+    # stand B: the hidden mu within the lab's tables (0.5-1.0), loads among the dead weights
+    ('[[exercise]]\nid = "B"\ntitle = "t"\nstand = "disc_roller"\nmu = [0.3, 0.6]\nfree = []\n', "exercise[0].mu[0]"),
+    ('[[exercise]]\nid = "B"\ntitle = "t"\nstand = "disc_roller"\nmu = [0.6, 0.8]\nfree = ["delta_h_m"]\n',
+     "exercise[0].free control"),
+    ('[[exercise]]\nid = "B"\ntitle = "t"\nstand = "disc_roller"\nmu = [0.6, 0.8]\nfree = []\n'
+     '[exercise.start]\nnormal_force_N = 30.0\n', "exercise[0].start.normal_force_N"),
+    ('[[exercise]]\nid = "B"\ntitle = "t"\nstand = "disc_roller"\nmu = [0.6, 0.8]\nfree = []\n'
+     '[exercise.start]\ndirection = 0.0\n', "exercise[0].start.direction"),
     ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.5, 0.4]\nfree = []\n', "exercise[0].mu[1]"),
     ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\nfree = ["brake"]\n', "exercise[0].free control"),
     ('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\n', "exercise[0].free"),

@@ -8,7 +8,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from rig.contact.effects.plastic_slip import PlasticSlip
+from rig.contact.effects.pressure_friction import PressureDependentFriction
 from rig.contact.effects.rolling_resistance import RollingResistance
 from rig.contact.effects.static_friction import StaticFriction, StaticFrictionAfterFirstStick
 from rig.contact.effects.surface_inertia import SurfaceInertia
@@ -21,10 +24,12 @@ EFFECT_KEYWORDS = {
     "static_ratio_after_first_stick": StaticFrictionAfterFirstStick,
     "inertia_number": SurfaceInertia,
     "rolling_length": RollingResistance,
+    "pressure_exponent": PressureDependentFriction,
 }
 # keyword -> the ContactEffects field its component fills (one field per kind of effect)
 _FIELDS = {"psi": "plastic_slip", "static_ratio": "static_friction", "static_ratio_after_first_stick": "static_friction",
-           "inertia_number": "surface_inertia", "rolling_length": "rolling_resistance"}
+           "inertia_number": "surface_inertia", "rolling_length": "rolling_resistance",
+           "pressure_exponent": "pressure_friction"}
 
 
 @dataclass(frozen=True)
@@ -35,6 +40,12 @@ class ContactEffects:
     static_friction: StaticFriction | None = None
     surface_inertia: SurfaceInertia | None = None
     rolling_resistance: RollingResistance | None = None
+    pressure_friction: PressureDependentFriction | None = None
+
+    def traction_bound(self, p: np.ndarray) -> np.ndarray:
+        """The traction bound per point [mu0 p0] for pressures p [p0]: p, or mu(p) p/mu0 with the
+        pressure-dependent coefficient (rig.contact.effects.pressure_friction) when it is on."""
+        return p if self.pressure_friction is None else self.pressure_friction.bound(p)
 
     @classmethod
     def from_keywords(cls, **values: float) -> ContactEffects:

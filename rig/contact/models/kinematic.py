@@ -35,18 +35,20 @@ import scipy.sparse as sparse
 from scipy.sparse.linalg import LinearOperator, gmres, splu
 
 from rig.contact.effects import ContactEffects
-from rig.contact.grid import Grid
+from rig.contact.grid import Grid, leading_edge, make_grid
 from rig.contact.influence import InfluenceOperator, influence_operator
-from rig.contact.kalker import kalker_coefficients
+from rig.contact.kalker import creep_coefficients
 from rig.contact.kinematics import Creepage
 from rig.contact.models import fastsim
 from rig.errors import ConvergenceError
 
-# dU/dx at a cell from the cell and the cell upstream (Kalker's backward difference, eqs. 8, 10)
-TRANSPORT = (1.0, -1.0)
 NEWTON_TOL = 1e-9  # max |F| relative to the largest traction bound (tractions are O(1) in mu p0)
 MAX_NEWTON = 50
 MAX_MEMORY_PASSES = 50
+BACKWARD_2 = (1.5, -2.0, 0.5)  # dU/dx at a cell from it and two cells upstream, times h
+# grids with at least this many cells across 2a start Newton from the solution on half as many
+# (nested iteration; coarser ones from FASTSIM)
+NESTED_START_N = 64
 
 
 @dataclass(frozen=True)
@@ -70,17 +72,39 @@ def project(z: np.ndarray, r: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.nd
 
 
 class Discretisation:
-    """The linear parts of the discrete model on one grid: U(t), q(t, U), s(q, U)."""
+    """The linear parts of the discrete model on one grid: U(t), q(t, U), s(q, U).
+
+    Transport (eqs. 8, 10), the slip at each cell centre x_c (step h along the rolling direction):
+
+        s_c = s_g(x_c) + (3 U_c - 4 U_c-1 + U_c-2)/(2 h)            (second-order backward difference)
+
+    except in the first cell of each row, which the leading edge x_L cuts off from its upstream
+    neighbour (x_c-1 < x_L < x_c). There the mean slip S1 over the step [x_c-1, x_c] straddles the
+    edge: its part outside the contact is the free surface's slip, which grows like
+    sqrt(x_L - x) from the edge (the traction there is bounded by mu p ~ sqrt(distance)). The
+    step before, [x_c-2, x_c-1], lies wholly outside with mean slip S0, so the outside part of S1
+    is r S0, r = d^1.5/((d + h)^1.5 - d^1.5), d = x_L - x_c-1, and the slip of the material in
+    the contact is s_c = (S1 - r S0)/(1 - r). Every row's entry condition sets the traction level
+    of the whole row (in stick, the material carries it downstream), so it must be accurate: the
+    backward difference across the edge alone (which lets material stick outside the contact)
+    makes nu_v first order with a sign that depends on where the edge cuts each row [R, our
+    construction; docs/contact-model.md, "Convergence study"].
+    """
 
     def __init__(self, grid: Grid, op: InfluenceOperator, effects: ContactEffects) -> None:
         self.grid = grid
         self.op = op
         self.idx = grid.index
-        # the cells upstream that TRANSPORT uses (inside the rectangle: GHOST_COLUMNS)
-        self.upstream = tuple(self.idx - k * grid.ny for k in range(1, len(TRANSPORT)))
+        self.upstream = (self.idx - grid.ny, self.idx - 2 * grid.ny)
+        self.weights, self.x_slip = _transport(grid)
         self.plastic = effects.plastic_slip
         self.inertia = effects.surface_inertia
         self.plastic_rate = 0.0 if self.plastic is None else self.plastic.rate(op.poisson)
+
+    def rigid_slip(self, creepage: Creepage) -> np.ndarray:
+        """s_g (2, N) [mu p0 v/G] at each cell's step midpoint (see the class docstring)."""
+        _, y = self.grid.centres()
+        return creepage.field(self.x_slip, y)
 
     def displacement(self, t: np.ndarray) -> np.ndarray:
         """Half-space displacement on the full rectangle, flattened to (2, cells)."""
@@ -98,20 +122,39 @@ class Discretisation:
         return q, self.elastic_slip(q, u)
 
     def elastic_slip(self, q: np.ndarray, u_full: np.ndarray) -> np.ndarray:
-        """dU/dx of the displacement a material point carries (eqs. 8, 10), by the backward
-        difference TRANSPORT, plus the plastic self slip of eq. (25) when it is on."""
-        du = TRANSPORT[0] * u_full[:, self.idx]
-        for weight, up in zip(TRANSPORT[1:], self.upstream):
-            du += weight * u_full[:, up]
-        slip = du / self.grid.hx
+        """Change of the displacement a material point carries over its step per unit step
+        (eqs. 8, 10; class docstring), plus the plastic self slip of eq. (25) when it is on."""
+        own, first, second = self.weights
+        slip = own * u_full[:, self.idx] + first * u_full[:, self.upstream[0]] + second * u_full[:, self.upstream[1]]
         if self.plastic is not None:
             slip += self.plastic.slip(q, self.op.poisson)
         return slip
 
-    def slip_scale(self) -> float:
-        """rho: the inverse of ds_c/dt_c, the slip of a cell per unit of its own traction [1]."""
+    def slip_scale(self) -> np.ndarray:
+        """rho (N,): about the inverse of ds_c/dt_c, a cell's slip per unit of its own traction [1]
+        (it scales the projection of the Newton residual; any positive value gives the same answer)."""
         k0, k1 = self.op.self_term[0], self.op.upstream_term[0]
-        return 1.0 / (TRANSPORT[0] * (k0 - k1) / self.grid.hx + self.plastic_rate)
+        return 1.0 / (self.weights[0] * (k0 - k1) + self.plastic_rate)
+
+
+def _transport(grid: Grid) -> tuple[np.ndarray, np.ndarray]:
+    """Weights (3, N) [1/a] of U at each active cell and at the cells one and two steps upstream,
+    and the x [a] at which the rigid slip is taken (Discretisation's transport, class docstring)."""
+    x, y = grid.centres()
+    h = grid.hx
+    entering = ~grid.active.ravel()[grid.index - grid.ny]
+    weights = np.empty((3, x.size))
+    weights[:] = np.array(BACKWARD_2)[:, None] / h
+    x_slip = x.copy()
+    xe = x[entering]
+    d = np.clip(leading_edge(grid.shape, grid.b_over_a, y[entering]) - (xe - h), 0.0, h)
+    r = d**1.5 / ((d + h) ** 1.5 - d**1.5)  # outside share of the straddling step's slip over S0
+    inside = (1.0 - r) * h
+    weights[0, entering] = 1.0 / inside
+    weights[1, entering] = -(1.0 + r) / inside
+    weights[2, entering] = r / inside
+    x_slip[entering] = ((xe - 0.5 * h) - r * (xe - 1.5 * h)) / (1.0 - r)
+    return weights, x_slip
 
 
 class _Preconditioner:
@@ -119,9 +162,10 @@ class _Preconditioner:
     cell to its upstream neighbours (solved exactly, sparse LU), and Kc^-1 the circulant inverse
     of the influence operator restricted to the contact (Vollebregt's FFT preconditioner idea)."""
 
-    def __init__(self, disc: Discretisation, rho: float, *, upwind: bool = True) -> None:
-        """upwind: the steady law couples a cell to its upstream neighbours (TRANSPORT); the
-        transient law of one rolling step does not (the carried displacement is known)."""
+    def __init__(self, disc: Discretisation, rho, *, upwind: bool = True) -> None:
+        """rho: Discretisation.slip_scale (N,) or a number; upwind: the steady law couples a cell
+        to its upstream neighbours (the transport); the transient law of one rolling step does
+        not (the carried displacement is known)."""
         grid = disc.grid
         n = disc.idx.size
         self.n = n
@@ -133,11 +177,11 @@ class _Preconditioner:
         if upwind:
             position = -np.ones(grid.p.size, dtype=int)
             position[disc.idx] = np.arange(n)
-            for up, weight in zip(disc.upstream, TRANSPORT[1:]):
+            for up, weight in zip(disc.upstream, disc.weights[1:]):
                 upstream = position[up]
                 has = np.flatnonzero(upstream >= 0)
-                self.links.append((has, upstream[has], rho * weight / grid.hx))
-            self.tangential = rho * (TRANSPORT[0] / grid.hx + disc.plastic_rate / k0)
+                self.links.append((has, upstream[has], (rho * weight)[has]))
+            self.tangential = rho * (disc.weights[0] + disc.plastic_rate / k0)
         else:
             self.tangential = rho
         # unknowns ordered line by line along the rolling direction (row j, then column i, then
@@ -183,9 +227,8 @@ def solve_grid(grid: Grid, poisson: float, creepage: Creepage, effects: ContactE
     """Solve the discrete kinematic law of friction for one steady rolling state."""
     op = influence_operator(grid, poisson)
     disc = Discretisation(grid, op, effects)
-    xc, yc = grid.centres()
-    s_g = creepage.field(xc, yc)
-    p = grid.gather(grid.p)
+    s_g = disc.rigid_slip(creepage)
+    p = effects.traction_bound(grid.gather(grid.p))  # mu(p) p/(mu0 p0); p itself unless mu depends on p
     n_cells = p.size
     rho = disc.slip_scale()
     precond = _Preconditioner(disc, rho)
@@ -193,7 +236,7 @@ def solve_grid(grid: Grid, poisson: float, creepage: Creepage, effects: ContactE
     static = effects.static_friction
     sticking_upstream = np.ones(n_cells, dtype=bool)
     r = p if static is None else static.bound(p, sticking_upstream)
-    t = _fastsim_start(grid, poisson, creepage, r)
+    t = _start(grid, poisson, creepage, effects, r)
     total_newton = total_krylov = 0
     for memory_pass in range(1, MAX_MEMORY_PASSES + 1):
         t, n_newton, n_krylov = _newton(disc.apply, s_g, precond, r, rho, t)
@@ -225,9 +268,8 @@ def solve_full_stick(grid: Grid, poisson: float, creepage: Creepage, effects: Co
     """
     op = influence_operator(grid, poisson)
     disc = Discretisation(grid, op, effects)
-    xc, yc = grid.centres()
-    s_g = creepage.field(xc, yc)
-    n = xc.size
+    n = grid.index.size
+    s_g = disc.rigid_slip(creepage)
     rho = disc.slip_scale()
     inside = np.ones(n, dtype=bool)
     preconditioner = _Preconditioner(disc, rho).factor(np.zeros((2, n)), np.ones(n), inside)
@@ -244,11 +286,27 @@ def solve_full_stick(grid: Grid, poisson: float, creepage: Creepage, effects: Co
     return t.reshape(2, n)
 
 
+def _start(grid: Grid, poisson: float, creepage: Creepage, effects: ContactEffects, r: np.ndarray) -> np.ndarray:
+    """Newton's start (2, N) [mu p0]: on fine grids the solution on the grid with half as many
+    cells, carried to the fine cells (each takes the traction of the coarse cell it lies in,
+    limited to its own bound), so that Newton only refines the stick/slip pattern (5 steps
+    instead of 24 at n = 128, pure spin, alpha' = 20.5); on coarser grids FASTSIM. The start changes the cost, not the answer."""
+    if grid.ny < NESTED_START_N:
+        return _fastsim_start(grid, poisson, creepage, r)
+    coarse = make_grid(grid.shape, grid.b_over_a, grid.ny // 2)
+    t_coarse = coarse.scatter(solve_grid(coarse, poisson, creepage, effects).q)
+    xc, yc = grid.centres()
+    i = np.clip(np.floor((xc - coarse.x[0]) / coarse.hx + 0.5).astype(int), 0, coarse.x.size - 1)
+    j = np.clip(np.floor((yc - coarse.y[0]) / coarse.hy + 0.5).astype(int), 0, coarse.ny - 1)
+    t = t_coarse[:, i, j]
+    return project(t, r)[0]
+
+
 def _fastsim_start(grid: Grid, poisson: float, creepage: Creepage, r: np.ndarray) -> np.ndarray:
-    """FASTSIM tractions with the ellipse's Kalker flexibility: a start that already has the
+    """FASTSIM tractions with the ellipse's flexibilities: a start that already has the
     right stick/slip pattern, so Newton needs few steps (a guess only; any start converges)."""
     b = float(np.clip(grid.b_over_a, 0.1, 10.0))
-    flex = fastsim.flexibility("ellipse", b, kalker_coefficients(b, poisson), creepage)
+    flex = fastsim.flexibility("ellipse", b, creep_coefficients("ellipse", b, poisson), creepage)
     return grid.gather(fastsim.march(grid, fastsim.slip_increments(grid, creepage), grid.scatter(r), flex))
 
 

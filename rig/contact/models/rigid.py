@@ -29,8 +29,11 @@ def sample_points(shape: str, b_over_a: float, n: int) -> tuple[np.ndarray, np.n
     return x[keep], y[keep], p[keep]
 
 
-def tractions(x: np.ndarray, y: np.ndarray, p: np.ndarray, creepage: Creepage) -> np.ndarray:
-    """Full-sliding traction (2, N) [mu p0] at points where the rigid slip is s_g (any scale)."""
+def tractions(x: np.ndarray, y: np.ndarray, bound: np.ndarray, creepage: Creepage) -> np.ndarray:
+    """Full-sliding traction (2, N) [mu p0] at points where the rigid slip is s_g (any scale).
+
+    bound: the traction bound at the points [mu p0]: the pressure p/p0, or mu(p) p/(mu0 p0) with a
+    pressure-dependent mu (rig.contact.effects.pressure_friction)."""
     s = creepage.field(x, y)
     norm = np.hypot(s[0], s[1])
-    return -p * s / np.where(norm > 0.0, norm, np.inf)
+    return -bound * s / np.where(norm > 0.0, norm, np.inf)

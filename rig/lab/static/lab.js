@@ -3,9 +3,66 @@
 "use strict";
 
 const $ = (id) => document.getElementById(id);
-const OUTPUTS = ["i_k", "l_over_a", "c_over_a", "nu_T", "nu_v", "mu_v", "mu_T"];
 const lab = { spec: null, session: null, series: null, source: null, drift: null, answers: {}, shownTwin: {}, busy: 0 };
 const SYNC_MS = 2000;  // how often the page asks whether another tab changed the session
+const RPM = 60 / (2 * Math.PI), DEG = 180 / Math.PI;
+// a reading without the binary rounding noise of its decimal steps (0.4018, not 0.40180000000000005)
+const tidy = (x) => +x.toPrecision(12);
+
+// What differs between the stands on the page: the controls (page unit <-> SI), the live traces,
+// the readings table, the lab sheet's columns. Everything else is shared.
+const STANDS = {
+  yoke: {
+    section: "stand-a", apply: "apply", readings: "readings-a", strobe: true, label: "stand A",
+    controls: [
+      { name: "normal_force_N", id: "normal_force_N", toSI: (v) => v, fromSI: (v) => v },
+      { name: "delta_h_m", id: "delta_h_mm", toSI: (v) => v / 1000, fromSI: (v) => +(v * 1000).toPrecision(6) },
+      { name: "brake_setpoint_N_m", id: "brake_setpoint_N_m", toSI: (v) => v, fromSI: (v) => v },
+      { name: "omega_1_set_rad_s", id: "speed_rpm", toSI: (v) => v / RPM, fromSI: (v) => +(v * RPM).toPrecision(6) },
+      { name: "direction", id: "direction_a", toSI: (v) => v, fromSI: (v) => v, always: true },
+    ],
+    traces: [{ name: "omega_1", label: "ω1", axis: "speed", color: "#1565c0" }, { name: "omega_2", label: "ω2", axis: "speed", color: "#c62828" },
+             { name: "brake_moment", label: "brake moment [N m]", axis: "load", color: "#2e7d32" }],
+    columns: [["F<sub>N</sub> [N]", (r) => r.settings.normal_force], ["Δh [mm]", (r) => (r.settings.delta_h * 1000).toFixed(3)],
+              ["T<sub>set</sub> [N m]", (r) => r.settings.brake_setpoint], ["N<sub>1</sub>", (r) => r.counts.wheel_1],
+              ["N<sub>2</sub>", (r) => r.counts.wheel_2], ["gate [s]", (r) => r.gate_time_s],
+              ["dyn. [V]", (r) => r.dynamometer_V.mean.toPrecision(6)], ["T<sub>2</sub> [N m]", (r) => tidy(r.balance_N_m.T2)]],
+    schematic(s) {
+      $("sch-force").textContent = `F_N = ${s.normal_force_N} N`;
+      $("sch-dh").textContent = `Δh = ${(s.delta_h_m * 1000).toFixed(2)} mm`;
+      $("sch-brake").textContent = `T_set = ${s.brake_setpoint_N_m} N m`;
+      $("sch-speed").textContent = `n1 = ${(s.omega_1_set_rad_s * RPM).toFixed(0)} rpm`;
+    },
+  },
+  disc_roller: {
+    section: "stand-b", apply: "apply-b", readings: "readings-b", strobe: false, label: "stand B",
+    controls: [
+      { name: "normal_force_N", id: "b_normal_force_N", toSI: (v) => v, fromSI: (v) => v },
+      { name: "l_m", id: "b_l_mm", toSI: (v) => v / 1000, fromSI: (v) => +(v * 1000).toPrecision(6) },
+      { name: "sigma_rad", id: "b_sigma_deg", toSI: (v) => v / DEG, fromSI: (v) => +(v * DEG).toPrecision(6) },
+      { name: "speed_step", id: "b_speed_step", toSI: (v) => v, fromSI: (v) => v },
+      { name: "direction", id: "b_direction", toSI: (v) => v, fromSI: (v) => v },
+    ],
+    traces: [{ name: "roller_speed", label: "ω roller", axis: "speed", color: "#1565c0" }, { name: "disc_speed", label: "ω disc", axis: "speed", color: "#c62828" },
+             { name: "F_T", label: "F_T", axis: "load", color: "#2e7d32" }, { name: "F_V", label: "F_V", axis: "load", color: "#6a1b9a" },
+             { name: "T_Mo", label: "T_Mo [N, N m]", axis: "load", color: "#ef6c00" }],
+    columns: [["F<sub>N</sub> [N]", (r) => r.settings.normal_force], ["l [mm]", (r) => tidy(r.settings.l * 1000)],
+              ["σ [°]", (r) => tidy(r.settings.sigma * DEG)], ["step", (r) => r.settings.speed_step],
+              ["direction", (r) => r.settings.direction], ["gate [s]", (r) => tidy(r.gate_time_s)],
+              ["F<sub>T</sub> [V]", (r) => r.recorder_V.F_T.mean.toPrecision(6)], ["F<sub>V</sub> [V]", (r) => r.recorder_V.F_V.mean.toPrecision(6)],
+              ["T<sub>Mo</sub> [V]", (r) => r.recorder_V.T_Mo.mean.toPrecision(6)]],
+    schematic(s) {
+      $("sch-b-force").textContent = `F_N = ${s.normal_force_N} N`;
+      $("sch-b-l").textContent = `l = ${(s.l_m * 1000).toFixed(1)} mm`;
+      $("sch-b-sigma").textContent = `σ = ${(s.sigma_rad * DEG).toFixed(2)}°`;
+      $("sch-b-speed").textContent = `roller ${[24, 48, 72][s.speed_step - 1]} rpm`;
+      $("sch-b-direction").textContent = s.direction > 0 ? "forward ⟳" : "reverse ⟲";
+      $("sch-roller").setAttribute("transform", `translate(${Math.max(-60, Math.min(60, s.l_m * 2500))} 0)`);
+    },
+  },
+};
+const stand = () => STANDS[lab.session.stand];
+const outputs = () => lab.spec[lab.session.stand].outputs;
 
 async function request(method, path, body) {
   const options = { method, headers: { "Content-Type": "application/json" } };
@@ -43,18 +100,29 @@ async function openSession(body) {
   try {
     const state = await api("POST", "/api/sessions", body);
     location.hash = "session=" + state.id;
-    lab.answers = {}; lab.shownTwin = {};
     await enter(state);
-    lab.session.version = (await api("POST", `/api/sessions/${state.id}/controls`, { strobe_ratio: 1 })).version;
-    live();
+    await settleNow();
   } catch (error) { $("exercise-info").textContent = `${error.field || ""}: ${error.message}`; }
 }
 
+async function settleNow() {
+  // a session that has not settled since it opened (or since the server restarted): settle at its settings
+  lab.session.version = (await api("POST", `/api/sessions/${lab.session.id}/controls`, { settings: {} })).version;
+  live();
+}
+
 async function enter(state) {
+  const fresh = !lab.session || lab.session.id !== state.id;
   lab.session = state;
+  if (fresh) { lab.answers = {}; lab.shownTwin = {}; }
+  for (const [point, values] of Object.entries(state.answers || {})) lab.answers[point] = values;
   $("bench").hidden = false;
+  for (const s of Object.values(STANDS)) $(s.section).hidden = s !== stand();
+  for (const s of Object.values(STANDS)) $(s.readings).hidden = s !== stand();
+  $("strobe-figure").hidden = !stand().strobe;
+  if (fresh) { $("gate_time").value = lab.spec[state.stand].gate_time_s.default; buildSheet(); }
   const ex = state.exercise;
-  $("session-info").textContent = `session ${state.id}` + (ex ? ` · exercise ${ex.id}: ${ex.title}` : " · practice");
+  $("session-info").textContent = `session ${state.id} · ${stand().label}` + (ex ? ` · exercise ${ex.id}: ${ex.title}` : " · practice");
   $("submit").hidden = !ex;
   showSettings(state.settings, state.free);
   $("strobe_ratio").value = state.strobe_ratio;
@@ -62,20 +130,33 @@ async function enter(state) {
   $("answer-point").innerHTML = "";
   state.readings.forEach(addReadings);
   if (state.readings.length) showReadings(state.readings[state.readings.length - 1], false);
+  if (fresh) fillAnswers();
+  document.body.dataset.stand = state.stand;
+}
+
+function fillAnswers() {
+  // the values the student last checked for the chosen point (kept by the server, also across a restart)
+  const given = lab.answers[$("answer-point").value] || {};
+  for (const name of outputs()) $(`ans-${name}`).value = given[name] === undefined ? "" : given[name];
+}
+
+function buildSheet() {
+  // the lab sheet of this stand: the points table's columns and one input per reduced output
+  const spec = lab.spec[lab.session.stand];
+  $("points").tHead.innerHTML = "<tr><th>point</th>" + stand().columns.map(([h]) => `<th>${h}</th>`).join("") + "</tr>";
+  $("answer-inputs").innerHTML = spec.outputs.map((n) => `<label>${n} <input id="ans-${n}" type="number" step="any"></label>`).join(" ");
+  $("optional-note").textContent = spec.optional.join(", ");
+  $("verdict").innerHTML = ""; $("verdict").dataset.result = "";
+  $("reduction").hidden = true; $("submitted").innerHTML = ""; $("saved").textContent = "";
 }
 
 function showSettings(s, free) {
-  $("normal_force_N").value = s.normal_force_N;
-  $("delta_h_mm").value = +(s.delta_h_m * 1000).toPrecision(6);
-  $("brake_setpoint_N_m").value = s.brake_setpoint_N_m;
-  $("speed_rpm").value = +(s.omega_1_set_rad_s * 60 / (2 * Math.PI)).toPrecision(6);
-  const inputs = { normal_force_N: "normal_force_N", delta_h_m: "delta_h_mm", brake_setpoint_N_m: "brake_setpoint_N_m",
-                   omega_1_set_rad_s: "speed_rpm" };
-  for (const [name, id] of Object.entries(inputs)) $(id).disabled = !free.includes(name);
-  $("sch-force").textContent = `F_N = ${s.normal_force_N} N`;
-  $("sch-dh").textContent = `Δh = ${(s.delta_h_m * 1000).toFixed(2)} mm`;
-  $("sch-brake").textContent = `T_set = ${s.brake_setpoint_N_m} N m`;
-  $("sch-speed").textContent = `n1 = ${(s.omega_1_set_rad_s * 60 / (2 * Math.PI)).toFixed(0)} rpm`;
+  for (const c of stand().controls) {
+    const value = s[c.name] === undefined ? 1 : s[c.name];  // stand A has no direction setting: forward
+    $(c.id).value = c.fromSI(value);
+    $(c.id).disabled = !(c.always || free.includes(c.name));
+  }
+  stand().schematic(s);
 }
 
 // ------------------------------------------------------------------------------------ controls
@@ -83,13 +164,12 @@ function showSettings(s, free) {
 async function apply() {
   $("control-error").textContent = "";
   const settings = {};
-  const read = (id) => ($(id).value === "" ? NaN : Number($(id).value));
-  const wanted = { normal_force_N: read("normal_force_N"), delta_h_m: read("delta_h_mm") / 1000,
-                   brake_setpoint_N_m: read("brake_setpoint_N_m"), omega_1_set_rad_s: read("speed_rpm") * 2 * Math.PI / 60 };
-  for (const [name, value] of Object.entries(wanted)) {
-    if (!lab.session.free.includes(name)) continue;
-    if (!Number.isFinite(value)) { showError({ field: `settings.${name}`, message: "enter a number" }); return; }
-    if (Math.abs(value - lab.session.settings[name]) > 1e-12 * Math.max(1, Math.abs(value))) settings[name] = value;
+  for (const c of stand().controls) {
+    if (!(c.always || lab.session.free.includes(c.name))) continue;
+    const value = $(c.id).value === "" ? NaN : c.toSI(Number($(c.id).value));
+    if (!Number.isFinite(value)) { showError({ field: `settings.${c.name}`, message: "enter a number" }); return; }
+    const now = lab.session.settings[c.name] === undefined ? 1 : lab.session.settings[c.name];
+    if (Math.abs(value - now) > 1e-12 * Math.max(1, Math.abs(value))) settings[c.name] = value;
   }
   setStatus("settling", "computing…");
   try {
@@ -98,7 +178,11 @@ async function apply() {
     lab.session.version = answer.version;
     showSettings(answer.settings, lab.session.free);
     live();
-  } catch (error) { showError(error); setStatus("settled", "settled (unchanged)"); }
+  } catch (error) {
+    showError(error);
+    showSettings(lab.session.settings, lab.session.free);  // the stand stays as it was
+    setStatus("settled", "settled (unchanged)");
+  }
 }
 
 async function setStrobe() {
@@ -117,48 +201,68 @@ function live() {
   if (lab.drift) cancelAnimationFrame(lab.drift);
   const ratio = Number($("ratio").value);
   $("ratio-shown").textContent = `simulated time runs ${ratio}× real time`;
-  lab.series = { t: [], omega_1: [], omega_2: [], brake_moment: [], phases: [] };
+  lab.series = { t: [], phases: [] };
+  for (const tr of stand().traces) lab.series[tr.name] = [];
   setStatus("settling", "settling…");
   const source = new EventSource(`/api/sessions/${lab.session.id}/live?ratio=${ratio}`);
   lab.source = source;
   source.addEventListener("frame", (event) => {
     const f = JSON.parse(event.data);
-    for (const key of ["t", "omega_1", "omega_2", "brake_moment"]) lab.series[key].push(...f[key]);
+    lab.series.t.push(...f.t);
+    for (const [name, values] of Object.entries(f.series)) lab.series[name].push(...values);
     const now = f.t[f.t.length - 1];
     if (f.strobe_phase !== null) lab.series.phases.push([now, f.strobe_phase]);
     $("clock").textContent = `t = ${now.toFixed(2)} s`;
-    drawSpeeds(f.settle_s);
-    drawStrobe(f.strobe_phase);
+    drawTraces(f.settle_s);
+    if (stand().strobe) drawStrobe(f.strobe_phase);
   });
   source.addEventListener("settled", (event) => {
     const f = JSON.parse(event.data);
     source.close();
     setStatus("settled", `settled after ${f.settle_s.toFixed(2)} s of simulated time`);
-    steadyStrobe(ratio, f.strobe_drift_marks_s);
+    if (stand().strobe) steadyStrobe(ratio, f.strobe_drift_marks_s);
   });
-  source.onerror = () => { source.close(); };
+  source.onerror = async () => {
+    // the stream broke off (a busy or restarted server): the settled state is the server's all the same
+    source.close();
+    if (lab.source !== source || $("status").dataset.state !== "settling") return;
+    try {
+      const state = await request("GET", `/api/sessions/${lab.session.id}`);
+      if (lab.source === source && state.settle_s !== null) setStatus("settled", `settled after ${state.settle_s.toFixed(2)} s of simulated time (stream interrupted)`);
+    } catch (error) { showError(error); }
+  };
 }
 
-function drawSpeeds(settle) {
-  const c = $("speeds"), g = c.getContext("2d"), s = lab.series;
+function drawTraces(settle) {
+  // the drive train over time: speeds on the left axis, loads (brake moment; F_T, F_V, T_Mo) on the right
+  const c = $("speeds"), g = c.getContext("2d"), s = lab.series, traces = stand().traces;
   g.clearRect(0, 0, c.width, c.height);
   if (!s.t.length) return;
-  const tMax = Math.max(s.t[s.t.length - 1], settle + 0.5), wMax = Math.max(...s.omega_1, ...s.omega_2, 1) * 1.1;
-  const bAbs = Math.max(...s.brake_moment.map(Math.abs), 0.1) * 1.2;
-  const x = (t) => 40 + (t / tMax) * (c.width - 50), yw = (w) => c.height - 20 - (w / wMax) * (c.height - 30);
-  const yb = (b) => (c.height - 10) / 2 - (b / bAbs) * (c.height - 30) / 2;
-  g.strokeStyle = "#999"; g.strokeRect(40, 10, c.width - 50, c.height - 30);
+  const values = (axis) => traces.filter((tr) => tr.axis === axis).flatMap((tr) => s[tr.name]);
+  const tMax = Math.max(s.t[s.t.length - 1], settle + 0.5);
+  const speeds = values("speed"), wMax = Math.max(...speeds.map(Math.abs), 1) * 1.1, signed = Math.min(...speeds) < 0;
+  const bAbs = Math.max(...values("load").map(Math.abs), 0.1) * 1.2;
+  const top = 10, bottom = c.height - 20, mid = (top + bottom) / 2;
+  const x = (t) => 40 + (t / tMax) * (c.width - 50);
+  const maps = { speed: signed ? (w) => mid - (w / wMax) * (bottom - top) / 2 : (w) => bottom - (w / wMax) * (bottom - top),
+                 load: (b) => mid - (b / bAbs) * (bottom - top) / 2 };
+  g.strokeStyle = "#999"; g.strokeRect(40, top, c.width - 50, bottom - top);
   g.fillStyle = "#333"; g.font = "11px sans-serif";
-  g.fillText(`ω [rad/s], 0..${wMax.toFixed(1)}`, 44, 22); g.fillText(`t [s], 0..${tMax.toFixed(1)}`, c.width - 100, c.height - 6);
-  g.setLineDash([4, 3]); g.strokeStyle = "#aaa"; g.beginPath(); g.moveTo(x(settle), 10); g.lineTo(x(settle), c.height - 20); g.stroke(); g.setLineDash([]);
-  const line = (ys, map, color) => { g.strokeStyle = color; g.beginPath(); ys.forEach((v, i) => (i ? g.lineTo(x(s.t[i]), map(v)) : g.moveTo(x(s.t[i]), map(v)))); g.stroke(); };
-  line(s.omega_1, yw, "#1565c0"); line(s.omega_2, yw, "#c62828"); line(s.brake_moment, yb, "#2e7d32");
-  g.fillStyle = "#1565c0"; g.fillText("ω1", 50, 40); g.fillStyle = "#c62828"; g.fillText("ω2", 70, 40);
-  g.fillStyle = "#2e7d32"; g.fillText(`brake moment (±${bAbs.toFixed(2)} N m)`, 90, 40);
+  g.fillText(`ω [rad/s], ${signed ? "±" : "0.."}${wMax.toFixed(1)}; loads ±${bAbs.toPrecision(3)}`, 44, 22);
+  g.fillText(`t [s], 0..${tMax.toFixed(1)}`, c.width - 100, c.height - 6);
+  g.setLineDash([4, 3]); g.strokeStyle = "#aaa"; g.beginPath(); g.moveTo(x(settle), top); g.lineTo(x(settle), bottom); g.stroke(); g.setLineDash([]);
+  let label = 50;
+  for (const tr of traces) {
+    const map = maps[tr.axis], ys = s[tr.name];
+    g.strokeStyle = tr.color; g.beginPath();
+    ys.forEach((v, i) => (i ? g.lineTo(x(s.t[i]), map(v)) : g.moveTo(x(s.t[i]), map(v))));
+    g.stroke();
+    g.fillStyle = tr.color; g.fillText(tr.label, label, 40); label += g.measureText(tr.label).width + 10;
+  }
 }
 
 function drawStrobe(phase) {
-  const c = $("strobe"), g = c.getContext("2d"), z = lab.spec.marks.wheel_2, r = c.width / 2 - 8;
+  const c = $("strobe"), g = c.getContext("2d"), z = lab.spec.yoke.marks.wheel_2, r = c.width / 2 - 8;
   g.clearRect(0, 0, c.width, c.height);
   g.save(); g.translate(c.width / 2, c.height / 2);
   g.fillStyle = "#222"; g.beginPath(); g.arc(0, 0, r, 0, 2 * Math.PI); g.fill();
@@ -193,48 +297,55 @@ async function record() {
     lab.session.readings[answer.readings.point] = answer.readings;
     lab.session.reduced = answer.reduced;
     lab.session.version = answer.version;
-    await countGate(answer.readings);
+    await runGate(answer.readings);
     addReadings(answer.readings);
     showReadings(answer.readings, true);
   } catch (error) { showError(error); }
   $("record").disabled = false;
 }
 
-function countGate(r) {
-  // the counters count while the gate is open (gate time / time ratio of real time)
+function runGate(r) {
+  // the gate is open for gate time / time ratio of real time: stand A's counters count, stand B's recorder runs
   const ratio = Number($("ratio").value), duration = (1000 * r.gate_time_s) / ratio;
   return new Promise((resolve) => {
     const start = performance.now();
     const tick = (now) => {
       const f = Math.min((now - start) / duration, 1);
-      $("counter-1").textContent = Math.floor(f * r.counts.wheel_1);
-      $("counter-2").textContent = Math.floor(f * r.counts.wheel_2);
+      if (r.counts) {
+        $("counter-1").textContent = Math.floor(f * r.counts.wheel_1);
+        $("counter-2").textContent = Math.floor(f * r.counts.wheel_2);
+      } else $("recording").textContent = f < 1 ? `recording: ${(f * r.gate_time_s).toFixed(1)} s` : "";
       if (f < 1) requestAnimationFrame(tick); else resolve();
     };
     requestAnimationFrame(tick);
   });
 }
 
-// a reading without the binary rounding noise of its decimal steps (0.4018, not 0.40180000000000005)
-const tidy = (x) => +x.toPrecision(12);
-
 function showReadings(r, select) {
-  $("counter-1").textContent = r.counts.wheel_1;
-  $("counter-2").textContent = r.counts.wheel_2;
-  $("marks").textContent = `${r.marks.wheel_1}, ${r.marks.wheel_2}`;
-  $("dynamometer").textContent = `${r.dynamometer_V.mean.toPrecision(6)} ± ${r.dynamometer_V.std.toPrecision(2)} (${r.dynamometer_V.samples} samples, step ${r.dynamometer_V.resolution.toPrecision(3)})`;
-  $("calibration").textContent = `${r.calibration.sensitivity_V_per_N.toPrecision(6)}, ${r.calibration.offset_V.toPrecision(4)}`;
-  $("balance").textContent = `${tidy(r.balance_N_m.T2)} (readings ${r.balance_N_m.readings.map(tidy).join(", ")}; step ${r.balance_N_m.resolution.toPrecision(3)})`;
+  if (r.counts) {
+    $("counter-1").textContent = r.counts.wheel_1;
+    $("counter-2").textContent = r.counts.wheel_2;
+    $("marks").textContent = `${r.marks.wheel_1}, ${r.marks.wheel_2}`;
+    $("dynamometer").textContent = `${r.dynamometer_V.mean.toPrecision(6)} ± ${r.dynamometer_V.std.toPrecision(2)} (${r.dynamometer_V.samples} samples, step ${r.dynamometer_V.resolution.toPrecision(3)})`;
+    $("calibration").textContent = `${r.calibration.sensitivity_V_per_N.toPrecision(6)}, ${r.calibration.offset_V.toPrecision(4)}`;
+    $("balance").textContent = `${tidy(r.balance_N_m.T2)} (readings ${r.balance_N_m.readings.map(tidy).join(", ")}; step ${r.balance_N_m.resolution.toPrecision(3)})`;
+  } else {
+    for (const [name, ch] of Object.entries(r.recorder_V)) {
+      $(`rec-${name}`).textContent = `${ch.mean.toPrecision(6)} ± ${ch.std.toPrecision(2)} (${ch.samples} samples, step ${ch.resolution.toPrecision(3)})`;
+      $(`cal-${name}`).textContent = ch.sensitivity.toPrecision(6);
+      $(`off-${name}`).textContent = ch.offset.toPrecision(4);
+    }
+  }
   if (select) $("answer-point").value = r.point;
   document.body.dataset.recorded = lab.session.readings.length;
 }
 
 function addReadings(r) {
   if ($(`point-${r.point}`)) return;  // already shown (a sync from another tab came first)
-  const s = r.settings, row = $("points").tBodies[0].insertRow();
+  const row = $("points").tBodies[0].insertRow();
   row.id = `point-${r.point}`;
-  for (const v of [r.point, s.normal_force, (s.delta_h * 1000).toFixed(3), s.brake_setpoint, r.counts.wheel_1,
-                   r.counts.wheel_2, r.gate_time_s, r.dynamometer_V.mean.toPrecision(6), tidy(r.balance_N_m.T2)]) row.insertCell().textContent = v;
+  row.insertCell().textContent = r.point;
+  for (const [, cell] of stand().columns) row.insertCell().textContent = cell(r);
   const option = document.createElement("option");
   option.value = option.textContent = r.point;
   $("answer-point").append(option);
@@ -244,7 +355,7 @@ function addReadings(r) {
 
 function answersOf() {
   const answers = {};
-  for (const name of OUTPUTS) { const v = $(`ans-${name}`).value; if (v !== "") answers[name] = Number(v); }
+  for (const name of outputs()) { const v = $(`ans-${name}`).value; if (v !== "") answers[name] = Number(v); }
   return answers;
 }
 
@@ -268,15 +379,15 @@ async function check() {
 }
 
 function showReduction() {
-  const rows = lab.session.reduced || [];
+  const rows = lab.session.reduced || [], names = outputs();
   if (lab.session.exercise && !rows.length) { $("verdict").innerHTML = "<p>In an exercise the twin's reduction is shown after you submit.</p>"; return; }
   const t = $("reduction");
-  t.tHead.innerHTML = "<tr><th>point</th>" + OUTPUTS.map((n) => `<th>${n}</th><th>U95</th>`).join("") + "<th>note</th></tr>";
+  t.tHead.innerHTML = "<tr><th>point</th>" + names.map((n) => `<th>${n}</th><th>U95</th>`).join("") + "<th>note</th></tr>";
   t.tBodies[0].innerHTML = "";
   for (const r of rows) {
     const row = t.tBodies[0].insertRow();
     row.insertCell().textContent = r.point;
-    for (const n of OUTPUTS) {
+    for (const n of names) {
       const cell = row.insertCell(); cell.className = `red-${n}`; cell.textContent = r.values[n] === null ? "—" : String(r.values[n]);
       row.insertCell().textContent = r.values[`U95_${n}`] === null ? "—" : r.values[`U95_${n}`].toPrecision(2);
     }
@@ -294,13 +405,15 @@ function drawResults() {
     const v = r.values;
     for (const m of ["mu_v", "mu_T"]) if (v[m] !== null) pts.push({ x: v.l_over_a, y: v[m], u: v[`U95_${m}`], twin: true, m });
     const a = lab.answers[r.point];
-    if (a) for (const m of ["mu_v", "mu_T"]) pts.push({ x: a.l_over_a, y: a[m], twin: false, m });
+    if (a) for (const m of ["mu_v", "mu_T"]) if (a[m] !== undefined) pts.push({ x: a.l_over_a, y: a[m], twin: false, m });
   }
-  const W = 460, H = 220, x = (l) => 40 + ((l + 1.2) / 2.4) * (W - 50);
+  const W = 460, H = 220, lMax = Math.max(1.2, ...pts.map((p) => Math.abs(p.x) * 1.1));
+  const x = (l) => 40 + ((l + lMax) / (2 * lMax)) * (W - 50);
   const yMax = Math.max(0.6, ...pts.map((p) => p.y + (p.u || 0))) * 1.05, y = (m) => H - 25 - (m / yMax) * (H - 35);
   let s = `<rect x="40" y="10" width="${W - 50}" height="${H - 35}" fill="none" stroke="#999"/>`;
-  s += `<text x="${W - 60}" y="${H - 8}">l/a</text><text x="4" y="20">μ</text><text x="4" y="${y(0) + 4}">0</text><text x="4" y="${y(yMax / 1.05) + 4}">${(yMax / 1.05).toFixed(2)}</text>`;
-  for (const l of [-1, 0, 1]) s += `<text x="${x(l) - 4}" y="${H - 10}">${l}</text>`;
+  s += `<text x="${W - 60}" y="${H - 8}">l/a</text><text x="4" y="${H / 2}">μ</text><text x="4" y="${y(0) + 4}">0</text><text x="4" y="${y(yMax / 1.05) + 4}">${(yMax / 1.05).toFixed(2)}</text>`;
+  const tick = lMax > 2 ? Math.ceil(lMax / 2) : 1;
+  for (let l = -Math.floor(lMax / tick) * tick; l <= lMax; l += tick) s += `<text x="${x(l) - 4}" y="${H - 10}">${l}</text>`;
   for (const p of pts) {
     const color = p.m === "mu_v" ? "#1565c0" : "#c62828";
     if (p.twin) s += `<line x1="${x(p.x)}" x2="${x(p.x)}" y1="${y(p.y - p.u)}" y2="${y(p.y + p.u)}" stroke="${color}"/><circle class="twin" cx="${x(p.x)}" cy="${y(p.y)}" r="5" fill="none" stroke="${color}"/>`;
@@ -328,24 +441,37 @@ async function submit() {
 
 // ------------------------------------------------------------------------------------ start
 
-async function init() {
-  lab.spec = (await api("GET", "/api/stands")).yoke;
-  for (const [name, g] of Object.entries(lab.spec.geometry)) {
-    const row = $("stand-data").querySelector("tbody").insertRow();
+function standData(tableId, geometry) {
+  for (const [name, g] of Object.entries(geometry)) {
+    const row = $(tableId).querySelector("tbody").insertRow();
     row.insertCell().textContent = name; row.insertCell().textContent = `${+g.value.toPrecision(6)} ${g.unit}`;
     row.title = g.source;
   }
+}
+
+async function init() {
+  lab.spec = await api("GET", "/api/stands");
+  standData("stand-data", lab.spec.yoke.geometry);
+  standData("stand-b-data", lab.spec.disc_roller.geometry);
+  for (const w of lab.spec.disc_roller.settings.normal_force_N.choices) {
+    const o = document.createElement("option"); o.value = w; o.textContent = `${w} N`; $("b_normal_force_N").append(o);
+  }
   const ex = await api("GET", "/api/exercises");
-  for (const e of ex.exercises) { const o = document.createElement("option"); o.value = e.id; o.textContent = `${e.id}: ${e.title}`; $("exercise").append(o); }
+  for (const e of ex.exercises) { const o = document.createElement("option"); o.value = e.id; o.textContent = `${e.id}: ${e.title}`; o.dataset.stand = e.stand; $("exercise").append(o); }
   $("open-exercise").disabled = !ex.exercises.length;
   $("open-practice").onclick = () => openSession({ stand: "yoke" });
-  $("open-exercise").onclick = () => openSession({ stand: "yoke", exercise: $("exercise").value, student: $("student").value });
-  $("apply").onclick = apply; $("record").onclick = record; $("set-strobe").onclick = setStrobe;
+  $("open-practice-b").onclick = () => openSession({ stand: "disc_roller" });
+  $("open-exercise").onclick = () => openSession({ stand: $("exercise").selectedOptions[0].dataset.stand, exercise: $("exercise").value, student: $("student").value });
+  $("apply").onclick = apply; $("apply-b").onclick = apply; $("record").onclick = record; $("set-strobe").onclick = setStrobe;
+  $("answer-point").onchange = fillAnswers;
   $("check").onclick = check; $("show-reduction").onclick = showReduction; $("save").onclick = save; $("submit").onclick = submit;
   const m = location.hash.match(/session=([0-9a-f]+)/);
   if (m) {
-    try { await enter(await api("GET", `/api/sessions/${m[1]}`)); live(); }
-    catch (error) { $("session-info").textContent = `${error.message}`; }
+    try {
+      const state = await api("GET", `/api/sessions/${m[1]}`);
+      await enter(state);
+      if (state.settle_s === null) await settleNow(); else live();
+    } catch (error) { $("session-info").textContent = `${error.message}`; }
   }
   setInterval(sync, SYNC_MS);
   document.body.dataset.ready = "yes";

@@ -143,7 +143,8 @@ class ContactPoint:
             ratio = np.where(np.isnan(ratio), self.radius_c, ratio)  # all at rest: the kinematic ratio
             l_raw = (q * (self.l_set + self.radius_c) - ratio) / a  # canonical l'/a, may be -inf
             far = np.minimum(self.l_limit / np.abs(l_raw), 1.0)  # far field: F_y, M_O ~ a/|l| (0 at inf)
-            alpha = self.alpha * np.minimum(ratio / self.radius_c, self.alpha_max / self.alpha)
+            # clamped to the law's domain after the product: alpha (alpha_max/alpha) may exceed alpha_max by an ulp
+            alpha = np.minimum(self.alpha * np.minimum(ratio / self.radius_c, self.alpha_max / self.alpha), self.alpha_max)
         l_hat = np.clip(l_raw, -self.l_limit, self.l_limit)
         c_hat = p * self.c / a
         nu = np.asarray(self.law(l_hat, c_hat, alpha), dtype=float).reshape(3, l_hat.size)
@@ -167,7 +168,7 @@ class ContactPoint:
         far = min(self.l_limit / abs(l_raw), 1.0) if l_raw != 0.0 else 1.0
         l_hat = min(max(l_raw, -self.l_limit), self.l_limit)
         c_hat = p * self.c / a
-        alpha = self.alpha * min(ratio / self.radius_c, self.alpha_max / self.alpha)
+        alpha = min(self.alpha * min(ratio / self.radius_c, self.alpha_max / self.alpha), self.alpha_max)
         nu_t, nu_v, nu_0 = (float(x) for x in self._scalar_law(l_hat, c_hat, alpha))
         moment_o = (-nu_0 + c_hat * nu_v - l_hat * nu_t) * far
         slip = math.hypot(w * (self.l_set + self.radius_c) - v, w * self.c) + abs(w) * a

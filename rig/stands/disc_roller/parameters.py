@@ -14,6 +14,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, fields
 
 from rig import validate
+from rig.contact.effects.pressure_friction import friction_at_peak_pressure
 from rig.errors import ParameterError
 from rig.reduction.geometry import StandBGeometry
 from rig.stands.base import EffectSpec, ParameterSpec, SettingSpec
@@ -36,7 +37,13 @@ PARAMETERS: Mapping[str, ParameterSpec] = {
         22.4e6, "Pa", 1e6, 1e9,
         "[computed] seed notes 3.2: apparent E* of the rubber lining from b/a = 0.5/0.75/1/2 at 9/21/36/144 N",
     ),
-    "mu": ParameterSpec(0.8, "1", 0.05, 2.0, "[assumed] true friction coefficient rubber/PMMA (seed notes 3.2 uses 0.8)"),
+    "mu": ParameterSpec(0.8, "1", 0.05, 2.0, "[assumed] true friction coefficient rubber/PMMA (seed notes 3.2 uses 0.8); "
+                        "with the contact effect pressure_exponent k: mu at friction_reference_pressure_Pa"),
+    "friction_reference_pressure_Pa": ParameterSpec(
+        1e6, "Pa", 1e3, 1e9,
+        "[assumed] p_ref of a pressure-dependent mu = mu (p/p_ref)^-k (contact effect pressure_exponent; unused "
+        "without it): 1 MPa, within the peak Hertz pressures 0.36-1.43 MPa of the 9-144 N dead weights",
+    ),
     "disc_inertia_kg_m2": ParameterSpec(0.07, "kg m^2", 1e-3, 1.0, "[assumed] seed notes 4.2: PMMA disc 400 x 20 mm + hub"),
     "roller_inertia_kg_m2": ParameterSpec(3e-3, "kg m^2", 1e-4, 0.1, "[assumed] seed notes 4.2: roller hub + lining"),
     "motor_inertia_kg_m2": ParameterSpec(
@@ -111,6 +118,12 @@ EFFECTS: Mapping[str, EffectSpec] = {
     "recorder_noise": EffectSpec("white noise of the bridge amplifiers of F_T, F_V and T_Mo (sensors default)"),
     "dynamometer_drift": EffectSpec("random-walk zero drift of dynamometers 5 (sensors default)"),
     "calibration_weight_errors": EffectSpec("true calibration weights differ from nominal within +-0.098 N"),
+    "law_mu_range": EffectSpec(
+        "numerical: the contact law's alpha' domain laid out for every mu in [mu_low, mu_high] instead of around "
+        "the scene's mu, so one surrogate table per load serves every mu of the range (rig lab's hidden mu); the "
+        "scene's mu must lie in the range",
+        {"mu_low": (0.5, "1"), "mu_high": (1.0, "1")},
+    ),
     paper_alpha.EFFECT: EffectSpec(
         "the contact runs at the paper's stated alpha' (ca. 100 ... ca. 1500 for 9 ... 144 N, seed 000 3.2; a power "
         "law in F_N through both ends) instead of eq. (21)'s Hertz estimate (10.6 ... 42.6 at mu = 0.8): b/a and p0 "
@@ -129,6 +142,8 @@ EFFECT_RANGES: Mapping[str, Mapping[str, tuple[float, float]]] = {
     "recorder_noise": {},
     "dynamometer_drift": {},
     "calibration_weight_errors": {},
+    "law_mu_range": {"mu_low": (PARAMETERS["mu"].lo, PARAMETERS["mu"].hi),
+                     "mu_high": (PARAMETERS["mu"].lo, PARAMETERS["mu"].hi)},
     paper_alpha.EFFECT: paper_alpha.RANGES,
 }
 
@@ -158,6 +173,7 @@ class StandBParameters:
     half_length: float
     contact_modulus: float
     mu: float
+    friction_reference_pressure: float
     disc_inertia: float
     roller_inertia: float
     motor_inertia: float
@@ -209,9 +225,23 @@ class StandBParameters:
         b = validate.number("b_over_a", b_over_a, 0.0, lo_open=True) * self.half_length
         return math.pi * 2.0 * self.half_length * self.contact_modulus * b * b / (4.0 * self.roller_radius)
 
-    def alpha_prime(self, normal_force: float) -> float:
-        """alpha' = 10 mu (b/a) (v/w0)/R_x with v/w0 = R_c, R_x = R_r (eq. 21, seed notes 1.7, 3.2) [1]."""
-        return 10.0 * self.mu * self.b_over_a(normal_force) * self.radius_c / self.roller_radius
+    def peak_pressure(self, normal_force: float) -> float:
+        """p0 = F_N/(pi a b) of the Hertz line contact (length 2a, half width b) [Pa]."""
+        return normal_force / (math.pi * self.half_length * self.b_over_a(normal_force) * self.half_length)
+
+    def friction(self, normal_force: float, pressure_exponent: float | None) -> float:
+        """The mu the contact runs at [1]: mu, or with a pressure-dependent mu (exponent k, None = off)
+        mu(p0) = mu (p0/p_ref)^-k at this load's peak Hertz pressure (rig.contact.effects.pressure_friction)."""
+        if pressure_exponent is None:
+            return self.mu
+        return friction_at_peak_pressure(self.mu, self.peak_pressure(normal_force), self.friction_reference_pressure,
+                                         pressure_exponent)
+
+    def alpha_prime(self, normal_force: float, mu: float | None = None) -> float:
+        """alpha' = 10 mu (b/a) (v/w0)/R_x with v/w0 = R_c, R_x = R_r (eq. 21, seed notes 1.7, 3.2) [1];
+        mu: the coefficient the contact runs at (None: the parameter mu; see :meth:`friction`)."""
+        mu = self.mu if mu is None else mu
+        return 10.0 * mu * self.b_over_a(normal_force) * self.radius_c / self.roller_radius
 
 
 def field_name(name: str) -> str:
@@ -255,6 +285,9 @@ def resolve_effects(effects: Mapping[str, Mapping[str, float]] | None) -> dict[s
             raise ParameterError("effects", sorted(resolved), f"{needs} together with {needed}")
     if paper_alpha.EFFECT in resolved:
         paper_alpha.check(resolved[paper_alpha.EFFECT])
+    if "law_mu_range" in resolved and resolved["law_mu_range"]["mu_high"] < resolved["law_mu_range"]["mu_low"]:
+        raise ParameterError("law_mu_range.mu_high", resolved["law_mu_range"]["mu_high"],
+                             f">= mu_low = {resolved['law_mu_range']['mu_low']:g}")
     return resolved
 
 

@@ -3,7 +3,8 @@
 Only the named effects are built (rig.stands.disc_roller.parameters.EFFECTS); the contact law
 per load (b/a) comes from rig.stands.contact_law.make_contact_law (direct or surrogate table,
 ContactSpec) over the domain the stand needs (l/a within +-rolling_point_limit, c/a of the
-twist range, alpha' from a quarter to four times the point's value), built on first use.
+twist range, alpha' from a quarter to four times the point's value - or of every mu in the range of
+the effect law_mu_range), built on first use.
 """
 
 from __future__ import annotations
@@ -69,7 +70,13 @@ class DiscRollerStand(Stand):
             raise ParameterError("drive", drive, "a rig.stands.base.DriveMode")
         if drive is DriveMode.QUASI_STATIC and "swinging_drive" in self.effects:
             raise ParameterError("drive", drive.value, "dynamic with the swinging drive (it has no steady state)")
+        if "law_mu_range" in self.effects:
+            span = self.effects["law_mu_range"]
+            if not span["mu_low"] <= self.params.mu <= span["mu_high"]:
+                raise ParameterError("mu", self.params.mu, f"[{span['mu_low']:g}, {span['mu_high']:g}], the range "
+                                     "of effects.law_mu_range")
         self.contact = contact
+        self.pressure_exponent = contact.effects.get("pressure_exponent")  # k of mu(p), None = off
         self.drive = drive
         self.instrument_effects = InstrumentEffects(
             noise="recorder_noise" in self.effects, drift="dynamometer_drift" in self.effects,
@@ -85,15 +92,25 @@ class DiscRollerStand(Stand):
         return P.resolve_parameters(parameters).recorder_rate
 
     # ---- components -------------------------------------------------------------------------
+    def friction(self, normal_force: float) -> float:
+        """The mu the contact runs at at this load [1]: the parameter mu, or mu(p0) with a
+        pressure-dependent mu (contact effect pressure_exponent; StandBParameters.friction)."""
+        return self.params.friction(normal_force, self.pressure_exponent)
+
     def law_domain(self, b_over_a: float) -> TableDomain:
         """Canonical (l/a, c/a, alpha') domain the stand evaluates the law in at this b/a (alpha' of eq. 21)."""
         p = self.params
         limit = p.rolling_point_limit
         c_max = p.pivot_distance * math.sin(P.SETTINGS["sigma_rad"].hi) / p.half_length
-        alpha = 10.0 * p.mu * b_over_a * p.radius_c / p.roller_radius
-        start = alpha * REDUCTION_START.mu_start / p.mu  # alpha' ~ mu: where the reduction's iteration starts
-        return TableDomain((-limit, limit), (-c_max, c_max), (min(alpha / ALPHA_BAND, start / START_MARGIN),
-                                                               max(alpha * ALPHA_BAND, start * START_MARGIN)))
+        mu = p.mu if self.pressure_exponent is None else self.friction(p.normal_force_for(b_over_a))
+        alpha = 10.0 * mu * b_over_a * p.radius_c / p.roller_radius
+        start = alpha * REDUCTION_START.mu_start / mu  # alpha' ~ mu: where the reduction's iteration starts
+        low = high = alpha
+        if "law_mu_range" in self.effects:  # laid out for a range of mu, not around the scene's (eq. 21)
+            span = self.effects["law_mu_range"]
+            low, high = (10.0 * span[k] * b_over_a * p.radius_c / p.roller_radius for k in ("mu_low", "mu_high"))
+        return TableDomain((-limit, limit), (-c_max, c_max), (min(low / ALPHA_BAND, start / START_MARGIN),
+                                                               max(high * ALPHA_BAND, start * START_MARGIN)))
 
     def alpha_factor(self, b_over_a: float) -> float:
         """alpha' the contact runs at over eq. (21)'s [1]: 1, or alpha'_paper/alpha'_Hertz with the
@@ -123,9 +140,10 @@ class DiscRollerStand(Stand):
         p = self.params
         b_over_a = p.b_over_a(settings.normal_force)
         domain = self.law_domain(b_over_a)
+        mu = self.friction(settings.normal_force)
         return ContactPoint(
-            law=self.law(b_over_a), normal_force=settings.normal_force, mu=p.mu, a=p.half_length,
-            b=b_over_a * p.half_length, alpha=p.alpha_prime(settings.normal_force), alpha_max=domain.alpha[1],
+            law=self.law(b_over_a), normal_force=settings.normal_force, mu=mu, a=p.half_length,
+            b=b_over_a * p.half_length, alpha=p.alpha_prime(settings.normal_force, mu), alpha_max=domain.alpha[1],
             l_set=settings.l, c=settings.offset_c(p.pivot_distance), radius_c=p.radius_c,
             spin_eps=p.spin_regularisation, l_limit=p.rolling_point_limit,
         )

@@ -1,5 +1,6 @@
 """What the simulation knew at an operating point of stand B (the log's /truth group).
 
+mu is the coefficient the contact ran at (mu(p0) with a pressure-dependent mu).
 Continuous drive: the steady contact (model coefficients nu_T, nu_v, nu_0 at the canonical
 rolling point l/a, c' /a = direction c/a - the frame the reduction works in), mu, alpha', b/a,
 and the gate means of the true signals F_T, F_V, T_Mo and the speeds. ``M_C`` is the pivoting
@@ -25,7 +26,7 @@ def point_truth(point, gate: GateData) -> dict[str, Quantity]:
     c = s.offset_c(p.pivot_distance)
     contact = point.train.contact
     truth = dict(
-        mu=Quantity(p.mu, "1"), b_over_a=Quantity(contact.b / contact.a, "1"),
+        mu=Quantity(contact.mu, "1"), b_over_a=Quantity(contact.b / contact.a, "1"),
         alpha_prime=Quantity(contact.alpha, "1"), l=Quantity(s.l, "m"), c=Quantity(c, "m"),
         l_over_a=Quantity(s.l / p.half_length, "1"),
     )
@@ -40,7 +41,7 @@ def point_truth(point, gate: GateData) -> dict[str, Quantity]:
         c_over_a=Quantity(s.direction * c / p.half_length, "1"),
         nu_T=Quantity(steady.nu_T, "1"), nu_v=Quantity(steady.nu_v, "1"), nu_0=Quantity(steady.nu_0, "1"),
         M_C=Quantity(steady.resisting_moment, "N m"), M_C_disc=Quantity(steady.moment_c, "N m"),
-        mu_v=Quantity(p.mu, "1"), mu_T=Quantity(p.mu, "1"),
+        mu_v=Quantity(contact.mu, "1"), mu_T=Quantity(contact.mu, "1"),
         spin=Quantity(float(np.mean(gate.signals["disc_speed"])), "rad/s"),
     )
     for name in ("F_T", "F_V", "T_Mo", "roller_speed", "disc_speed", "rolling_speed"):

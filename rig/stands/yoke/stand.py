@@ -67,6 +67,10 @@ class YokeStand(Stand):
     def __init__(self, parameters: Mapping[str, float], effects: Mapping[str, Mapping[str, float]],
                  contact: ContactSpec, drive: DriveMode, *, law_factory: laws.LawFactory | None = None) -> None:
         self.params = spec.resolve(parameters)
+        if "pressure_exponent" in contact.effects:  # its mu(p0) per load is done for stand B only
+            raise ParameterError("contact.effects.pressure_exponent", contact.effects["pressure_exponent"],
+                                 "not on stand A (yoke): the pressure-dependent mu is available on stand B "
+                                 "(disc_roller) and in the contact model (docs/contact-model.md)")
         self.law = laws.LawCache(contact, self.params.mu, law_factory)  # law(b_over_a, geometry) -> (law, domain)
         if not isinstance(drive, DriveMode):
             raise ParameterError("drive", drive, "one of " + ", ".join(repr(m.value) for m in DriveMode))

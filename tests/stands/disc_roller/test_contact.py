@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -144,3 +145,20 @@ def test_loads_are_finite_and_bounded_for_any_state(v, w, c, l_set):
 def test_scalar_loads_equal_the_vectorised_loads(v, w, c, l_set):
     cp = point(l_set=l_set, c=c)
     assert cp.loads_one(v, w) == pytest.approx(tuple(cp.loads(v, w)[:, 0]), rel=1e-12, abs=1e-15)
+
+
+def test_a_disc_at_rest_clamps_alpha_to_the_laws_domain_to_the_last_ulp():
+    """alpha (alpha_max/alpha) exceeds alpha_max by an ulp for some pairs (this one: a lab session at
+    36 N, mu = 0.755): the clamp must still keep alpha' inside the table's domain."""
+    alpha, alpha_max = 20.08117838819283, 106.38724133097631
+    assert alpha * (alpha_max / alpha) > alpha_max
+    seen = []
+
+    def law(l, c, a):
+        seen.append(np.max(a))
+        return smooth_law(l, c, a)
+
+    contact = dataclasses.replace(point(law=law), alpha=alpha, alpha_max=alpha_max)
+    contact.loads(np.array([0.5]), np.array([0.0]))  # roller moving, disc at rest: |v/w| = inf
+    contact.loads_one(0.5, 0.0)
+    assert seen and max(seen) <= alpha_max
