@@ -1,7 +1,7 @@
 """Cost of a study per operating point: time and log bytes for 100 / 1 600 / 10 000 points.
 
-    python benchmarks/bench_scale.py [--points 100 1600 10000] [--repeats 1] [--jobs 1]
-                                     [--dask-points 100000] [--dask-workers 2] [--gate-time 4.0]
+    python benchmarks/bench_scale.py [--points 100 1600 10000] [--repeats 1] [--jobs 1] [--gate-time 4.0]
+                                     [--study 100000] [--study-workers 2]
 
 The scene is the built-in `default` (stand A, quasi-static drive, 4 s gates, instruments on)
 with only the sweep's `num` raised (issue 12). Each run is `python -m rig run SCENE -o DIR` in a
@@ -11,10 +11,12 @@ Reported per size: median wall time [s] and its spread over the repeats, the tim
 rise with the size), log.h5 [bytes], the raw samples the points really record (dynamometer and
 balance channels: 8 bytes a sample) and the log's overhead beyond them [bytes per point].
 
-``--dask-points N`` also runs N points on a Dask LocalCluster of ``--dask-workers`` single-thread
-workers (`rig run --scheduler`), a large study as a user would run it, and prints points per
-second and bytes per point. On a shared machine wall times are noisy: the CPU time of the child
-and the load average before each run are printed beside them. Never asserts: a benchmark reports.
+``--study N`` runs a large study of N points as a user would run it, twice: on a Dask
+LocalCluster of ``--study-workers`` single-thread worker processes (`rig run --scheduler`) and
+with ``-j`` ``--study-workers`` (a local process pool), and prints points per second, CPU time
+(the workers' included) and bytes per point. ``--points`` with no sizes skips the table. On a
+shared machine wall times are noisy: the CPU time and the load average before each run are
+printed beside them. Never asserts: a benchmark reports.
 """
 
 from __future__ import annotations
@@ -80,21 +82,35 @@ def run_once(scene: Path, jobs: int, extra: list[str] | None = None) -> dict[str
 
 
 def dask_run(scene: Path, workers: int) -> dict[str, float]:
-    """The scene on a LocalCluster of ``workers`` one-thread worker processes."""
+    """The scene on a LocalCluster of ``workers`` one-thread worker processes; CPU time includes the
+    workers' (counted when the cluster has closed them)."""
     from distributed import LocalCluster
 
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
-        return run_once(scene, 1, ["--scheduler", cluster.scheduler_address])
+        run = run_once(scene, 1, ["--scheduler", cluster.scheduler_address])
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    run["cpu"] = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return run
+
+
+def study_line(label: str, points: int, run: dict[str, float]) -> str:
+    """One line of a large study's result."""
+    return (f"{label}: {points} points in {run['wall']:.1f} s (CPU {run['cpu']:.0f} s, load {run['load']:.1f}) = "
+            f"{points / run['wall']:.0f} points/s, log {run['size']} B = {run['size'] / points:.0f} B/point "
+            f"({(run['size'] - run['raw']) / points:.0f} B/point beyond the raw samples)")
 
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--points", type=int, nargs="+", default=[100, 1600, 10000], help="study sizes")
+    parser.add_argument("--points", type=int, nargs="*", default=[100, 1600, 10000], help="study sizes (none: skip)")
     parser.add_argument("--repeats", type=int, default=1, help="runs per size (median reported)")
     parser.add_argument("--jobs", type=int, default=1, help="--jobs of `rig run` (default 1)")
     parser.add_argument("--gate-time", type=float, default=4.0, help="gate time [s] (default 4, the scene's)")
-    parser.add_argument("--dask-points", type=int, default=0, help="also run this many points on a Dask LocalCluster")
-    parser.add_argument("--dask-workers", type=int, default=2, help="workers of the LocalCluster (default 2)")
+    parser.add_argument("--study", type=int, default=0,
+                        help="also run this many points on a Dask LocalCluster and with a process pool")
+    parser.add_argument("--study-workers", type=int, default=2,
+                        help="workers of the LocalCluster and of the pool (-j) of the study (default 2)")
     args = parser.parse_args()
 
     with tempfile.TemporaryDirectory(prefix="bench_scale_scenes_") as folder:
@@ -120,13 +136,11 @@ def main() -> int:
                 print(f"        budget: 1 600 points <= {BUDGET_S_1600:g} s ({'met' if wall <= BUDGET_S_1600 else 'NOT met'}), "
                       f"overhead <= {BUDGET_OVERHEAD_B:g} B/point "
                       f"({'met' if (size - raw) / n <= BUDGET_OVERHEAD_B else 'NOT met'})")
-        if args.dask_points:
-            scene = scene_file(Path(folder), args.dask_points, args.gate_time)
-            run = dask_run(scene, args.dask_workers)
-            print(f"Dask LocalCluster, {args.dask_workers} workers: {args.dask_points} points in {run['wall']:.1f} s = "
-                  f"{args.dask_points / run['wall']:.0f} points/s, log {run['size']} B = "
-                  f"{run['size'] / args.dask_points:.0f} B/point ({(run['size'] - run['raw']) / args.dask_points:.0f} "
-                  "B/point beyond the raw samples)")
+        if args.study:
+            scene = scene_file(Path(folder), args.study, args.gate_time)
+            print(study_line(f"Dask LocalCluster, {args.study_workers} workers", args.study,
+                             dask_run(scene, args.study_workers)))
+            print(study_line(f"-j {args.study_workers}", args.study, run_once(scene, args.study_workers)))
     return 0
 
 

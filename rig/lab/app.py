@@ -282,7 +282,7 @@ def create_app(lab: Lab) -> Flask:
                     raise ParameterError("strobe_ratio", data["strobe_ratio"], "absent: this stand has no stroboscope")
                 session.set_strobe_ratio(rq.number(data, "strobe_ratio"))
             if settings is not None:
-                session.set_controls(session.check_controls(settings))  # errors name settings.<name>
+                session.set_controls(settings)  # errors name settings.<name>
             elif session.transient is None:
                 session.set_controls({})
             lab.persist(session)

@@ -44,7 +44,8 @@ def stand_scene(stand: str, *, seed: int, mu: float, effects: Mapping[str, Mappi
     coefficient ``mu`` [1], the named ``effects`` {name: {parameter: value}} and the start settings
     ``start`` {setting: SI value}."""
     contact = {"yoke": CONTACT_A, "disc_roller": CONTACT_B}[stand]
-    lines = [f"# A rig lab session of stand {'A' if stand == 'yoke' else 'B'} ({stand}, rig.lab): the points are the operator's, recorded in the lab.",
+    label = {"yoke": "stand A", "disc_roller": "stand B"}[stand]
+    lines = [f"# A rig lab session of {label} (rig.lab): the points are the operator's, recorded in the lab.",
              "[scene]", 'kind = "stand"', f"description = {json.dumps(description)}", f'stand = "{stand}"',
              f"seed = {int(seed)}", 'drive = "dynamic"', "", "[parameters]", f"mu = {_value(mu)}", "", contact]
     for name, values in effects.items():

@@ -353,6 +353,9 @@ class StandBSession(LabSession):
         "normal_force_N": SettingSpec("N", DEAD_WEIGHTS_N[0], DEAD_WEIGHTS_N[-1],
                                       "the dead weights of the text (9, 21, 36, 144 N)", DEAD_WEIGHTS_N),
         "l_m": SettingSpec("m", -0.02, 0.02, "roller position l by the handwheel (screw 19), text: 0...+-20 mm"),
+        "sigma_rad": SettingSpec("rad", -0.15, 0.15, "twist sigma of body 14, screw 15: c = e sin(sigma), eq. (36); "
+                                 "the lab keeps |c/a| <= 2.6, inside the contact table (|c/a| <= 3.49), so that the "
+                                 "reduction's perturbed inputs stay in it too"),
     }
     SHOWN = ("l_over_a", "c_over_a", "M_C_N_m", "nu_T", "nu_v", "nu_0", "mu_v", "mu_T", "mu_M")
     TRUTH = ("mu", "l_over_a", "c_over_a", "M_C")

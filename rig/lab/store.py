@@ -10,6 +10,7 @@ half of either. The folder is ``rig lab --state DIR`` (default ``<output folder>
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import re
@@ -47,7 +48,8 @@ class SessionStore:
         except OSError as error:
             raise ParameterError("--state", str(self.folder), f"a folder the lab can write ({error})") from None
         finally:
-            tmp.unlink(missing_ok=True)  # gone after the rename; removed after a failure
+            with contextlib.suppress(OSError):  # gone after the rename; removed after a failure
+                tmp.unlink(missing_ok=True)
 
     def read(self, ident: str) -> dict | None:
         """The stored state of ``ident``, or None when there is none."""

@@ -32,7 +32,8 @@ def standard_draws(draws: int, normal: int, bounded: tuple[Distribution, ...],
     them: ``normal`` rows of standard normals (drawn as one (draws, normal) block), then one row of
     unit draws on [-1, 1] for each bounded kind in turn."""
     z = rng.standard_normal((draws, normal)) if normal else np.empty((draws, 0))
-    return np.vstack([z.T, *(UNIT_DRAWS[kind](rng, draws) for kind in bounded)])
+    # C order: the products take blocks of columns (np.vstack would keep z.T's Fortran order)
+    return np.ascontiguousarray(np.vstack([z.T, *(UNIT_DRAWS[kind](rng, draws) for kind in bounded)]))
 
 
 @functools.lru_cache(maxsize=8)
@@ -90,16 +91,16 @@ def expanded_uncertainty(propagation: Propagation, probability: float = 0.95, dr
     jac = propagation.jacobian[np.ix_(ok, active)]
     # y - y0 = J (rows.T scale).T: the small product first, then (outputs, draws) rows that hold each
     # output's draws contiguously for the quantile
-    spread = np.abs(_product((np.where(np.isfinite(jac), jac, 0.0) @ scale.T), rows))
-    result[ok] = row_quantiles(spread, p)
+    spread = _product((np.where(np.isfinite(jac), jac, 0.0) @ scale.T), rows)
+    result[ok] = row_quantiles(np.abs(spread, out=spread), p)  # in place: a second 1 MB array costs its page faults
     return result
 
 
 DRAW_BLOCK = 1_024
 """Draws per matrix product [1]: a product of (outputs, m) by (m, 8192) is small enough for one
-core but above OpenBLAS's threshold for threads, and on a busy machine its threads cost several
-times the arithmetic (measured: 0.05 ms alone, 2-5 ms per point under load); products over
-blocks of 1 024 draws stay single-threaded (0.06 ms)."""
+core but above OpenBLAS's threshold for threads, and on a busy machine the threads cost more than
+the arithmetic (measured at load average 2: U95 3.2 ms a point with them, 1.4 ms with
+OPENBLAS_NUM_THREADS=1); products over blocks of 1 024 draws stay on one thread (0.06 ms a point)."""
 
 
 def _product(left: np.ndarray, rows: np.ndarray) -> np.ndarray:
@@ -111,7 +112,7 @@ def _product(left: np.ndarray, rows: np.ndarray) -> np.ndarray:
     return out
 
 
-PREFILTER_STRIDE = 8  # every 8th draw estimates where the upper tail starts (rows_quantile)
+PREFILTER_STRIDE = 8  # every 8th draw estimates where the upper tail starts (row_quantiles)
 
 
 def row_quantiles(rows: np.ndarray, p: float) -> np.ndarray:

@@ -22,6 +22,7 @@ time, b/a, geometry) raise ParameterError instead.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -114,6 +115,16 @@ def input_set(
     return InputSet(tuple(quantities), covariances)
 
 
+@functools.lru_cache(maxsize=256)
+def _kinematics(n1: float, n2: float, marks_1: int, marks_2: int, alpha_1: float, l1: float, l2: float,
+                delta_h: float) -> tuple[float, float, float]:
+    """(i_k [1], c [m], l [m]) from the counts, eqs. (29)-(31), remembered: of a point's ~40 evaluations
+    (Jacobian, driver check) only those that perturb a count or the geometry ask a new question."""
+    i_k = eq.ratio_from_counts(n1, n2, marks_1, marks_2)
+    c, l = eq.stand_a_rolling_point(i_k, alpha_1, l1, l2, delta_h)
+    return i_k, c, l
+
+
 def _lateral_force(values: Mapping[str, float], g: StandAGeometry) -> float:
     """F_y [N] from the dynamometer signal and its calibration (eq. 33 lever)."""
     force_dyn = eq.force_from_signal(
@@ -128,8 +139,7 @@ def _moment_numerator(values: Mapping[str, float], readings: StandAReadings, g: 
     if min(n1, n2) <= 0.0:
         return math.nan
     try:
-        c, _ = eq.stand_a_rolling_point(eq.ratio_from_counts(n1, n2, readings.marks_1, readings.marks_2),
-                                        g.alpha_1, g.l1, g.l2, g.delta_h)
+        _, c, _ = _kinematics(n1, n2, readings.marks_1, readings.marks_2, g.alpha_1, g.l1, g.l2, g.delta_h)
     except SpinTooSmallError:
         return math.nan
     return reading_value(values, "T2", "N_m") + _lateral_force(values, g) * (g.delta_h - c)
@@ -157,10 +167,9 @@ def evaluate(
         else:
             why = f"{counts}: wheel 2 stalled (hard case 2)"
         return Evaluation(out, dict.fromkeys(kinematic, why), math.nan, 0)
-    i_k = eq.ratio_from_counts(n1, n2, readings.marks_1, readings.marks_2)
     omega_1 = eq.angular_speed_from_counts(n1, readings.marks_1, reading_value(values, "T_gate", "s"))
     try:
-        c, l = eq.stand_a_rolling_point(i_k, g.alpha_1, g.l1, g.l2, g.delta_h)
+        i_k, c, l = _kinematics(n1, n2, readings.marks_1, readings.marks_2, g.alpha_1, g.l1, g.l2, g.delta_h)
     except SpinTooSmallError as error:
         return Evaluation(out, dict.fromkeys(kinematic, str(error)), math.nan, 0)
     sin_a1 = math.sin(g.alpha_1)

@@ -7,8 +7,8 @@ point, the error type, its text and the worker's traceback.
 
 The scene goes to the workers once (scattered); one task simulates a batch of consecutive points
 with the operator of rig.runner.operator - about TASKS_PER_THREAD batches per worker thread, at
-most MAX_BATCH points each - because a task per point costs the scheduler and the client more
-than the point itself (a 3 000-point study ran at 12 points/s that way on two workers). A worker
+most MAX_BATCH points each - so that a study of 10^5 points is a few thousand tasks, not 10^5
+tasks each carrying the scene (the scheduler's cost grows with the tasks). A worker
 thread builds its stand from the scene and calibrates it once per run (a pure function of the run
 seed by the contract, so every worker holds the records the serial run holds), then keeps it for
 the run's further points. Stands are kept per (run, worker thread) - a worker with several threads

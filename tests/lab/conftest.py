@@ -63,9 +63,11 @@ class LabServer:
 def lab_server(tmp_path_factory):
     """``rig lab --no-browser --port 0`` with the example class, started once for the lab tests."""
     server = start_server(tmp_path_factory.mktemp("lab-sessions"), "--exercises", str(EXAMPLE_CLASS))
-    warm_up(server)
-    yield server
-    server.stop()
+    try:
+        warm_up(server)
+        yield server
+    finally:  # also when the warm-up fails: no server left running
+        server.stop()
 
 
 def start_server(out_dir: Path, *extra: str) -> LabServer:

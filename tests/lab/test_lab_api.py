@@ -116,7 +116,7 @@ def _malformed_stand_b(sid: str) -> list[tuple[str, str, object, bytes | None]]:
     for name, bad in itertools.product(GOOD_SETTINGS_B, BAD_VALUES):
         cases.append(("POST", f"{s}/controls", {"settings": {name: bad}}, None))
     for name, value in (("normal_force_N", 30.0), ("normal_force_N", 0.0), ("normal_force_N", 200.0),
-                        ("l_m", 0.03), ("l_m", -0.021), ("sigma_rad", 0.3), ("sigma_rad", -0.25), ("speed_step", 0.0),
+                        ("l_m", 0.03), ("l_m", -0.021), ("sigma_rad", 0.2), ("sigma_rad", -0.16), ("speed_step", 0.0),
                         ("speed_step", 2.5), ("speed_step", 4.0), ("direction", 0.0), ("direction", 2.0),
                         ("direction", -0.5), ("delta_h_m", 0.0), ("brake_setpoint_N_m", 0.5), ("sigma", 0.1)):
         cases.append(("POST", f"{s}/controls", {"settings": {name: value}}, None))
@@ -197,6 +197,25 @@ def test_hidden_values_are_not_sent_before_submission(lab_server):
                                         {"answers": [{"point": 0, "values": GOOD_ANSWERS}]})
     assert status == 200 and answer["results"][0]["truth"]["mu"] == mu
     assert [row["point"] for row in lab_server.request("GET", f"api/sessions/{sid}")[1]["reduced"]] == [0]
+
+
+def test_stand_b_hidden_values_are_not_sent_before_submission(lab_server):
+    student = "s-hidden-b"
+    mu, _ = ClassFile.load(EXAMPLE_CLASS).get("B1").draw(student)
+    status, state = lab_server.request("POST", "api/sessions", {"stand": "disc_roller", "exercise": "B1",
+                                                                "student": student})
+    assert status == 201
+    sid = state["id"]
+    texts = [json.dumps(state),
+             json.dumps(lab_server.request("POST", f"api/sessions/{sid}/controls", {"settings": {"l_m": -0.01}})[1]),
+             json.dumps(lab_server.request("POST", f"api/sessions/{sid}/record", {"gate_time_s": 1.0})[1]),
+             json.dumps(lab_server.request("POST", f"api/sessions/{sid}/check", {"point": 0, "answers": GOOD_ANSWERS_B})[1]),
+             json.dumps(lab_server.request("GET", f"api/sessions/{sid}")[1]),
+             lab_server.request("GET", f"api/sessions/{sid}/live?ratio=100")[1]]
+    for text in texts:
+        assert repr(mu) not in text and f"{mu:.6f}"[:7] not in text
+        assert "law_mu_range" not in text and "true_" not in text and '"mu"' not in text
+    assert lab_server.request("GET", f"api/sessions/{sid}")[1]["reduced"] == []
 
 
 def test_concurrent_requests_on_one_session_keep_it_consistent(lab_server):

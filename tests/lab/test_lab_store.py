@@ -34,3 +34,14 @@ def test_a_damaged_state_file_is_a_named_error(tmp_path):
         SessionStore(tmp_path).read(IDENT)
     assert caught.value.name == "session"
     json.loads((tmp_path / f"{IDENT}.json").read_text() + '""}')  # the file itself is left as it was
+
+
+def test_a_state_folder_the_lab_cannot_write_is_a_named_400_and_the_server_goes_on(tmp_path):
+    from rig.lab.app import Lab, create_app
+
+    blocked = tmp_path / "a-file"
+    blocked.write_text("not a folder")
+    client = create_app(Lab(tmp_path / "out", state_dir=blocked)).test_client()
+    response = client.post("/api/sessions", json={"stand": "disc_roller"})
+    assert response.status_code == 400 and response.get_json()["field"] == "--state"
+    assert client.get("/api/stands").status_code == 200
