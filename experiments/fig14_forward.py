@@ -16,8 +16,8 @@ model's coefficients (n = 12, poisson 0.5: the fig14 scene's contact), and the s
 Cost: the coefficients are solved directly at the campaign's 56 rolling points (not read from
 the scene's surrogate table, whose error, up to 0.006 in nu, is several times the instruments' u
 at the heavy loads) on a grid of alpha' (cubic in log alpha') and at 5 nodes of Psi and of k
-(cubic between them, as rig.fit does); the solves are kept in an .npz cache, so only the first
-run pays for them (about 9 x 730 solves, 4-6 min on one core).
+(cubic between them, as rig.fit does); the solves are kept in an .npz cache (keyed on the
+solver's DISCRETISATION_REVISION), so only the first run pays for them (9 x 728 solves).
 """
 
 from __future__ import annotations
@@ -30,7 +30,7 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from rig.contact.effects.pressure_friction import friction_at_peak_pressure
-from rig.contact.solve import solve
+from rig.contact.solve import DISCRETISATION_REVISION, solve
 from rig.stands.disc_roller import parameters as P
 
 LOADS_N = (9.0, 21.0, 36.0, 144.0)  # dead weights (seed 000 3.2.1)
@@ -90,7 +90,8 @@ class ForwardModel:
         """{'psi': (5, N, A, 3), 'k': (5, N, A, 3)} coefficient tables at the effect nodes."""
         if cache is not None and cache.is_file():
             with np.load(cache) as stored:
-                if np.array_equal(stored["alpha"], ALPHA_GRID) and stored["psi"].shape[1] == self.campaign.size:
+                if (np.array_equal(stored["alpha"], ALPHA_GRID) and stored["psi"].shape[1] == self.campaign.size
+                        and "revision" in stored and int(stored["revision"]) == DISCRETISATION_REVISION):
                     return {"psi": stored["psi"], "k": stored["k"]}
         t0 = time.perf_counter()
         plain = CoefficientTable(self.campaign, self.params, {}).values
@@ -104,7 +105,7 @@ class ForwardModel:
         if cache is not None:
             cache.parent.mkdir(parents=True, exist_ok=True)
             partial = cache.with_name(cache.name + ".tmp.npz")
-            np.savez(partial, alpha=ALPHA_GRID, **out)
+            np.savez(partial, alpha=ALPHA_GRID, revision=DISCRETISATION_REVISION, **out)
             partial.replace(cache)
         return out
 
