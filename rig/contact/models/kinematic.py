@@ -102,7 +102,8 @@ class Discretisation:
         self.plastic_rate = 0.0 if self.plastic is None else self.plastic.rate(op.poisson)
 
     def rigid_slip(self, creepage: Creepage) -> np.ndarray:
-        """s_g (2, N) [mu p0 v/G] at each cell's step midpoint (see the class docstring)."""
+        """s_g (2, N) [mu p0 v/G] where the transport takes it: the cell centre, or for the first
+        cell of a row the point its edge-corrected slip refers to (class docstring)."""
         _, y = self.grid.centres()
         return creepage.field(self.x_slip, y)
 
