@@ -42,6 +42,15 @@ def _open(driver, url: str) -> None:
     Select(driver.find_element(By.ID, "ratio")).select_by_visible_text("20")
 
 
+def _open_exercise(driver, url: str, student: str, exercise: str) -> None:
+    """Open the page, enter the student's id, open the exercise and wait until the stand settles."""
+    _open(driver, url)
+    _type(driver, "student", student)
+    Select(driver.find_element(By.ID, "exercise")).select_by_value(exercise)
+    driver.find_element(By.ID, "open-exercise").click()
+    _settled(driver)
+
+
 def _settled(driver) -> None:
     try:
         _wait(driver, lambda d: _attr(d, "status", "data-state") == "settled")
@@ -195,11 +204,7 @@ def test_a_reload_and_a_second_tab_share_one_uncorrupted_session(lab_server, bro
 def test_an_exercise_is_graded_and_exported(lab_server, browser, screenshot):
     student = "s-0042"
     mu, _seed = ClassFile.load(EXAMPLE_CLASS).get("A1").draw(student)
-    _open(browser, lab_server.url)
-    _type(browser, "student", student)
-    Select(browser.find_element(By.ID, "exercise")).select_by_value("A1")
-    browser.find_element(By.ID, "open-exercise").click()
-    _settled(browser)
+    _open_exercise(browser, lab_server.url, student, "A1")
     assert not browser.find_element(By.ID, "normal_force_N").is_enabled()
     assert browser.find_element(By.ID, "brake_setpoint_N_m").is_enabled()
     for setpoint in ("0.4", "1.0"):

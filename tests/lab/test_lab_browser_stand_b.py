@@ -16,8 +16,8 @@ from selenium.webdriver.support.ui import Select
 
 from rig.lab.exercises import ClassFile
 from tests.lab.conftest import EXAMPLE_CLASS
-from tests.lab.test_lab_browser import _apply, _check, _open, _record, _rig_reduce, _save, _settled, _significant, \
-    _type, _wait
+from tests.lab.test_lab_browser import _apply, _check, _open, _open_exercise, _record, _rig_reduce, _save, _settled, \
+    _significant, _wait
 
 OUTPUTS_B = ("l_over_a", "c_over_a", "M_C_N_m", "nu_T", "nu_v", "nu_0", "mu_v", "mu_T", "mu_M")
 
@@ -102,11 +102,7 @@ def _check_b(driver, point: int, answers: dict[str, float]) -> str:
 def test_a_stand_b_exercise_is_graded_with_its_hidden_mu(lab_server, browser):
     student = "s-0777"
     mu, _seed = ClassFile.load(EXAMPLE_CLASS).get("B1").draw(student)
-    _open(browser, lab_server.url)
-    _type(browser, "student", student)
-    Select(browser.find_element(By.ID, "exercise")).select_by_value("B1")
-    browser.find_element(By.ID, "open-exercise").click()
-    _settled(browser)
+    _open_exercise(browser, lab_server.url, student, "B1")
     assert not browser.find_element(By.ID, "b_normal_force_N").is_enabled()
     assert browser.find_element(By.ID, "b_l_mm").is_enabled() and browser.find_element(By.ID, "b_direction").is_enabled()
     _apply(browser, b_l_mm="-10")
