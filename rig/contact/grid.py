@@ -10,7 +10,7 @@ the field outside.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 import numpy as np
 
@@ -85,9 +85,10 @@ class Grid:
     def cell_area(self) -> float:
         return self.hx * self.hy
 
-    @property
+    @cached_property
     def index(self) -> np.ndarray:
-        """Flat indices (into the full rectangle) of the active cells."""
+        """Flat indices (into the full rectangle) of the active cells (computed once: the solvers
+        scatter and gather with them in every product)."""
         return np.flatnonzero(self.active.ravel())
 
     def centres(self) -> tuple[np.ndarray, np.ndarray]:

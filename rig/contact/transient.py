@@ -38,7 +38,7 @@ from rig.contact.grid import SHAPES, make_grid
 from rig.contact.influence import influence_operator
 from rig.contact.kalker import B_OVER_A_RANGE
 from rig.contact.kinematics import Creepage
-from rig.contact.models.kinematic import Discretisation, _newton, _Preconditioner
+from rig.contact.models.kinematic import STICK_MARGIN, Discretisation, _newton, _Preconditioner
 from rig.contact.solve import DEFAULT_N, N_RANGE
 from rig.errors import ParameterError
 
@@ -214,7 +214,7 @@ class _Stepper:
             newton_total += its
             now = self.carried(t)
             sigma = s0 + now[:, self.index] + plastic * t
-            stick = np.hypot(t[0], t[1]) < r * (1.0 - 1e-9)
+            stick = np.hypot(t[0], t[1]) < r * (1.0 - STICK_MARGIN)
             carried = now
             stuck = np.ones(grid.p.size)
             stuck[self.index] = stick

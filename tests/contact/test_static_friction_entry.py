@@ -11,6 +11,7 @@ nu_v 0.5562 against 0.4937).
 import pytest
 
 from rig.contact.effects import ContactEffects
+from rig.contact.models.kinematic import NEWTON_TOL
 from rig.contact.solve import solve
 from rig.errors import ParameterError
 
@@ -27,7 +28,7 @@ def test_both_conventions_bound_the_kinetic_case_and_order_the_adhesion(alpha):
     for r in (entering_static, after_stick):
         assert abs(r.nu_T) <= 2.0 and abs(r.nu_v) <= 2.0  # bounded by mu0/mu
     if kinetic.stick_fraction == 0.0:  # nothing ever sticks: never static after a first stick
-        assert after_stick.nu_v == pytest.approx(kinetic.nu_v, abs=1e-9)
+        assert after_stick.nu_v == pytest.approx(kinetic.nu_v, abs=10 * NEWTON_TOL)  # same problem, two paths
         assert entering_static.nu_v > kinetic.nu_v + 0.01  # entering material held mu0 p
     elif after_stick.stick_fraction == entering_static.stick_fraction:  # the same cells stick: agree
         assert after_stick.nu_v == pytest.approx(entering_static.nu_v, abs=1e-6)

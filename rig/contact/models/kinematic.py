@@ -19,7 +19,7 @@ tests/contact/test_marching_diverges.py shows it), so it is not offered.
 Solver: semi-smooth Newton on F(t) = q - P_r(q - rho s) (P_r: projection on the disc of radius
 r per cell), GMRES on the exact generalised Jacobian with FFT influence products, right-
 preconditioned by (restricted circulant inverse of K) o (exact upwind solve of the local law);
-FASTSIM gives the start, a backtracking line search globalises. Static friction (mu0/mu > 1)
+FASTSIM gives the start, a backtracking line search on |F|_2 globalises. Static friction (mu0/mu > 1)
 adds an outer loop over the stick/slip memory of each material point along its row: it starts
 with every point holding mu0 p and moves a point to mu p once its material has slipped one cell
 upstream; a point never moves back within one solve, so the loop ends after at most N passes
@@ -32,23 +32,27 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sparse
-from scipy.sparse.linalg import LinearOperator, gmres, splu
+from scipy.linalg import lapack
 
 from rig.contact.effects import ContactEffects
 from rig.contact.grid import Grid, leading_edge, make_grid
 from rig.contact.influence import InfluenceOperator, influence_operator
 from rig.contact.kalker import creep_coefficients
 from rig.contact.kinematics import Creepage
+from rig.contact.krylov import gmres as krylov_gmres
 from rig.contact.models import fastsim
 from rig.errors import ConvergenceError
 
-NEWTON_TOL = 1e-9  # max |F| relative to the largest traction bound (tractions are O(1) in mu p0)
+NEWTON_TOL = 1e-7  # max |F| relative to the largest traction bound: nu to ~1e-8 (tractions are O(1) in mu p0)
+# a cell sticks where |q| stays below its bound by more than Newton's tolerance can blur
+STICK_MARGIN = 10 * NEWTON_TOL
 MAX_NEWTON = 50
 MAX_MEMORY_PASSES = 50
 BACKWARD_2 = (1.5, -2.0, 0.5)  # dU/dx at a cell from it and two cells upstream, times h
 # grids with at least this many cells across 2a start Newton from the solution on half as many
 # (nested iteration; coarser ones from FASTSIM)
 NESTED_START_N = 64
+BAND_BELOW, BAND_ABOVE = 5, 1  # bandwidths of the preconditioner's local law in line order
 
 
 @dataclass(frozen=True)
@@ -97,6 +101,11 @@ class Discretisation:
         self.idx = grid.index
         self.upstream = (self.idx - grid.ny, self.idx - 2 * grid.ny)
         self.weights, self.x_slip = _transport(grid)
+        cells = np.arange(self.idx.size)
+        self.transport = sparse.csr_matrix(  # (N, full cells): the weights at each cell and upstream
+            (self.weights.ravel(), (np.tile(cells, 3), np.concatenate([self.idx, *self.upstream]))),
+            shape=(self.idx.size, grid.p.size),
+        )
         self.plastic = effects.plastic_slip
         self.inertia = effects.surface_inertia
         self.plastic_rate = 0.0 if self.plastic is None else self.plastic.rate(op.poisson)
@@ -125,8 +134,7 @@ class Discretisation:
     def elastic_slip(self, q: np.ndarray, u_full: np.ndarray) -> np.ndarray:
         """Change of the displacement a material point carries over its step per unit step
         (eqs. 8, 10; class docstring), plus the plastic self slip of eq. (25) when it is on."""
-        own, first, second = self.weights
-        slip = own * u_full[:, self.idx] + first * u_full[:, self.upstream[0]] + second * u_full[:, self.upstream[1]]
+        slip = (self.transport @ u_full.T).T
         if self.plastic is not None:
             slip += self.plastic.slip(q, self.op.poisson)
         return slip
@@ -160,7 +168,7 @@ def _transport(grid: Grid) -> tuple[np.ndarray, np.ndarray]:
 
 class _Preconditioner:
     """M^-1 = Kc^-1 o L^-1: L is the Jacobian with K replaced by K_self, which only couples a
-    cell to its upstream neighbours (solved exactly, sparse LU), and Kc^-1 the circulant inverse
+    cell to its upstream neighbours (solved exactly: a band LU in line order), and Kc^-1 the circulant inverse
     of the influence operator restricted to the contact (Vollebregt's FFT preconditioner idea)."""
 
     def __init__(self, disc: Discretisation, rho, *, upwind: bool = True) -> None:
@@ -185,16 +193,18 @@ class _Preconditioner:
             self.tangential = rho * (disc.weights[0] + disc.plastic_rate / k0)
         else:
             self.tangential = rho
-        # unknowns ordered line by line along the rolling direction (row j, then column i, then
-        # component): L only couples a cell to cells upstream in its own line, so the LU factor
-        # of the permuted matrix is block-banded and costs O(N), not O(N n)
+        # unknowns ordered line by line along the rolling direction (row j, then column i), the two
+        # components of a cell side by side: L couples an unknown only to the same cell and to the
+        # two cells upstream in its line, so it is a band matrix (5 below the diagonal, 1 above)
+        # and its LU factor costs O(N) (LAPACK's banded solver)
         column, row = np.divmod(disc.idx, grid.ny)
         rank = np.empty(n, dtype=int)
         rank[np.lexsort((column, row))] = np.arange(n)
         self.permutation = np.concatenate([2 * rank, 2 * rank + 1])  # (component, cell) -> line order
         self.inverse_permutation = np.argsort(self.permutation)
 
-    def factor(self, zhat: np.ndarray, ratio: np.ndarray, inside: np.ndarray) -> LinearOperator:
+    def factor(self, zhat: np.ndarray, ratio: np.ndarray, inside: np.ndarray):
+        """M^-1 for the Newton step at projection data (zhat, ratio, inside): a function of v (2N,)."""
         n = self.n
         pxx = np.where(inside, 1.0, ratio * (1.0 - zhat[0] ** 2))
         pxy = np.where(inside, 0.0, -ratio * zhat[0] * zhat[1])
@@ -209,19 +219,21 @@ class _Preconditioner:
             cols += [up, up + n, up, up + n]
             vals += [pxx[has] * coefficient, pxy[has] * coefficient, pxy[has] * coefficient, pyy[has] * coefficient]
         perm = self.permutation
-        matrix = sparse.csc_matrix(
-            (np.concatenate(vals), (perm[np.concatenate(rows)], perm[np.concatenate(cols)])), shape=(2 * n, 2 * n)
-        )
-        lu = splu(matrix, permc_spec="NATURAL")
+        i, j = perm[np.concatenate(rows)], perm[np.concatenate(cols)]
+        band = np.zeros((2 * BAND_BELOW + BAND_ABOVE + 1, 2 * n))
+        band[BAND_BELOW + BAND_ABOVE + i - j, j] = np.concatenate(vals)
+        lu, pivots, info = lapack.dgbtrf(band, BAND_BELOW, BAND_ABOVE)
+        if info != 0:
+            raise ConvergenceError(f"preconditioner factor is singular (LAPACK dgbtrf info {info})")
         grid = self.disc.grid
         op = self.disc.op
         inverse = self.inverse_permutation
 
         def apply(v):
-            w = lu.solve(v[inverse])[perm].reshape(2, n)
+            w = lapack.dgbtrs(lu, BAND_BELOW, BAND_ABOVE, v[inverse], pivots)[0][perm].reshape(2, n)
             return grid.gather(op.apply_inverse(grid.scatter(w))).ravel()
 
-        return LinearOperator((2 * n, 2 * n), matvec=apply, dtype=float)
+        return apply
 
 
 def solve_grid(grid: Grid, poisson: float, creepage: Creepage, effects: ContactEffects) -> GridSolution:
@@ -245,7 +257,7 @@ def solve_grid(grid: Grid, poisson: float, creepage: Creepage, effects: ContactE
         total_krylov += n_krylov
         q, elastic = disc.apply(t)
         s = s_g + elastic
-        stick = np.hypot(q[0], q[1]) < r * (1.0 - 1e-9)
+        stick = np.hypot(q[0], q[1]) < r * (1.0 - STICK_MARGIN)
         if static is None:
             break
         new_upstream = sticking_upstream & static.upstream_state(stick, grid)
@@ -258,7 +270,8 @@ def solve_grid(grid: Grid, poisson: float, creepage: Creepage, effects: ContactE
             f"stick/slip memory (static friction mu0/mu = {static.ratio}) did not settle in "
             f"{MAX_MEMORY_PASSES} passes: the stick/slip partition keeps changing"
         )
-    return GridSolution(q, np.where(stick, 0.0, s), stick, total_newton, total_krylov, memory_pass)
+    # Newton leaves |q| up to its tolerance above the bound in sliding cells: the bound is exact
+    return GridSolution(project(q, r)[0], np.where(stick, 0.0, s), stick, total_newton, total_krylov, memory_pass)
 
 
 def solve_full_stick(grid: Grid, poisson: float, creepage: Creepage, effects: ContactEffects, rtol: float = 1e-12) -> np.ndarray:
@@ -278,12 +291,9 @@ def solve_full_stick(grid: Grid, poisson: float, creepage: Creepage, effects: Co
     def operator(v):
         return disc.apply(v.reshape(2, n))[1].ravel()
 
-    t, info = gmres(
-        LinearOperator((2 * n, 2 * n), matvec=operator, dtype=float), -s_g.ravel(),
-        rtol=rtol, atol=0.0, restart=100, maxiter=50, M=preconditioner,
-    )
-    if info != 0:
-        raise ConvergenceError(f"full-stick linear solve did not reach rtol {rtol:g} (GMRES info {info})")
+    t, _, converged = krylov_gmres(operator, -s_g.ravel(), preconditioner, rtol=rtol, restart=100, maxiter=5000)
+    if not converged:
+        raise ConvergenceError(f"full-stick linear solve did not reach rtol {rtol:g} in 5000 GMRES iterations")
     return t.reshape(2, n)
 
 
@@ -328,10 +338,10 @@ def _newton(apply, s0: np.ndarray, precond: _Preconditioner, r: np.ndarray, rho:
 
     t = t0
     f, z, zn, inside = evaluate(t)
-    fnorm = float(np.abs(f).max())
     krylov = 0
     for iteration in range(MAX_NEWTON + 1):
-        if fnorm <= tol:
+        largest = float(np.abs(f).max())
+        if largest <= tol:
             return t, iteration, krylov
         if iteration == MAX_NEWTON:
             break
@@ -346,41 +356,22 @@ def _newton(apply, s0: np.ndarray, precond: _Preconditioner, r: np.ndarray, rho:
             dp = np.where(inside, dz, ratio * (dz - zhat * radial))
             return (dq - dp).ravel()
 
-        counter = _Counter()
-        forcing = min(0.1, max(fnorm / scale, 0.1 * tol / fnorm))
-        delta, _ = gmres(
-            LinearOperator((2 * n, 2 * n), matvec=jacobian, dtype=float),
-            -f.ravel(),
-            rtol=forcing,
-            atol=0.0,
-            restart=60,
-            maxiter=10,
-            M=precond.factor(zhat, ratio, inside),
-            callback=counter,
-            callback_type="pr_norm",
-        )
-        krylov += counter.count
+        forcing = min(0.1, max(largest / scale, 0.1 * tol / largest))
+        delta, products, _ = krylov_gmres(jacobian, -f.ravel(), precond.factor(zhat, ratio, inside), rtol=forcing)
+        krylov += products
         delta = delta.reshape(2, n)
+        # backtracking on |F|_2, the merit whose decrease the Newton direction guarantees (the largest
+        # |F_c| often rises for a full step while the whole residual falls)
+        norm = float(np.linalg.norm(f))
         step = 1.0
         while True:
             trial = evaluate(t + step * delta)
-            trial_norm = float(np.abs(trial[0]).max())
-            if trial_norm < (1.0 - 1e-4 * step) * fnorm or step < 1e-4:
+            if float(np.linalg.norm(trial[0])) < (1.0 - 1e-4 * step) * norm or step < 1e-4:
                 break
             step *= 0.5
         t = t + step * delta
-        (f, z, zn, inside), fnorm = trial, trial_norm
+        f, z, zn, inside = trial
     raise ConvergenceError(
         f"kinematic contact solve did not converge in {MAX_NEWTON} Newton iterations: residual "
-        f"{fnorm / scale:.2e} of the traction bound (tolerance {NEWTON_TOL:.0e})"
+        f"{largest / scale:.2e} of the traction bound (tolerance {NEWTON_TOL:.0e})"
     )
-
-
-class _Counter:
-    """GMRES callback that counts iterations."""
-
-    def __init__(self) -> None:
-        self.count = 0
-
-    def __call__(self, _residual: float) -> None:
-        self.count += 1
