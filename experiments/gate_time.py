@@ -25,7 +25,8 @@ import pandas as pd
 from rig.reduction import stand_a
 from rig.reduction.result import ReducedPoint
 from rig.stands.base import ContactSpec, DriveMode, PointOutcome
-from rig.stands.yoke.reduction import coefficients, point_readings
+from rig.stands.contact_law import LawCoefficients
+from rig.stands.yoke.reduction import point_readings
 from rig.stands.yoke.stand import YokeStand
 from sensors.dynamometer import STAND_A_GAIN
 
@@ -56,7 +57,7 @@ def make_stand(spec: ContactSpec) -> YokeStand:
 def measure(stand: YokeStand, gate_time_s: float, seed: int = SEED) -> Measured:
     """Simulate the operating point for one gate [s] and reduce it with the stand's own law."""
     geometry = stand.params.geometry_at(SETTINGS["delta_h_m"])
-    law = coefficients(*stand.law(geometry.b_over_a(SETTINGS["normal_force_N"]), geometry))
+    law = LawCoefficients(*stand.law(geometry.b_over_a(SETTINGS["normal_force_N"]), geometry))
     stand.calibrate(seed)
     point = stand.start_point(0, SETTINGS, None, seed)
     point.settle(30.0)

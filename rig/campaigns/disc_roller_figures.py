@@ -344,7 +344,7 @@ def alpha_option_lines(points: pd.DataFrame, name: str, run_stand, other_stand) 
     judged with the run's u (steady_points)."""
     loads = points["normal_force_N"]
     other = steady_points(other_stand, points)
-    lines = [f"alpha' options (seed notes 3.2: the paper's 100 .. 1500 vs eq. (21)'s estimate is unresolved):",
+    lines = ["alpha' options (seed notes 3.2: the paper's 100 .. 1500 vs eq. (21)'s estimate is unresolved):",
              f"  this run: {alpha_option(run_stand)}; alpha' {alpha_values(run_stand, loads)}",
              f"  other, dashed lines (truth only): {alpha_option(other_stand)}; alpha' {alpha_values(other_stand, loads)}"]
     for label, frame in (("this run", points), ("other", other)):

@@ -25,6 +25,7 @@ import numpy as np
 
 from rig.errors import ParameterError
 from rig.reduction.budget import UncertaintyBudget, budget
+from rig.reduction.coefficients import with_model_error
 from rig.reduction.coverage import expanded_uncertainty
 from rig.reduction.drivers import Numerator, significant_drivers
 from rig.reduction.iteration import ReductionSettings, solve_with_drivers
@@ -158,12 +159,20 @@ def reduce_stand_point(evaluate: Callable[..., Evaluation], inputs: InputSet, nu
         raise ParameterError("coefficients", chain.get("coefficients"),
                              "a callable (l_over_a, c_over_a, alpha) -> (nu_T, nu_v, nu_0)")
     drivers, no_driver = significant_drivers(inputs, numerators, settings.significance)
-    chain = dict(chain, coefficients=remembered(chain["coefficients"]))
+    coefficients = chain["coefficients"]
+    chain = dict(chain, coefficients=remembered(coefficients))
 
     def bound(values: Mapping[str, float], start: Start) -> Evaluation:
         return evaluate(values, start, settings=settings, **chain)
 
     start = Start(settings.mu_start, drivers, True, no_driver)
+    point = reduce_point(bound, inputs, start, settings.relative_step, guards, settings.significance, driven)
+    error_at = getattr(coefficients, "numerical_error", None)
+    state = [point.values.get(name, math.nan) for name in ("l_over_a", "c_over_a", "alpha_prime")]
+    if error_at is None or not all(math.isfinite(x) for x in state):
+        return point
+    # the model's numerical error at the reduced state, as inputs of its own (rig.reduction.coefficients)
+    inputs = with_model_error(inputs, error_at(*state))
     return reduce_point(bound, inputs, start, settings.relative_step, guards, settings.significance, driven)
 
 

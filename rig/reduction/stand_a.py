@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 from rig import validate
 from rig.reduction import equations as eq
-from rig.reduction.coefficients import Coefficients, call_model
+from rig.reduction.coefficients import Coefficients, call_model, corrected
 from rig.reduction.geometry import StandAGeometry, with_inputs
 from rig.reduction.iteration import ReductionSettings
 from rig.reduction.readings import ForceCalibration, Measured, reading_inputs, reading_value
@@ -187,7 +187,7 @@ def evaluate(
         nu, why = call_model(coefficients, l / g.a, c / g.a, alpha)
         if nu is None:
             return state, dict.fromkeys(DRIVEN[1:], why)
-        nu_t, nu_v, nu_0 = nu
+        nu_t, nu_v, nu_0 = corrected(nu, values)
         denominator = eq.mu_t_denominator(nu_t, nu_0, l, g.l2, g.a)
         state.update(nu_T=nu_t, nu_v=nu_v, nu_0=nu_0, D_m=denominator)
         reasons = {}

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 from rig import validate
 from rig.reduction import equations as eq
-from rig.reduction.coefficients import Coefficients, call_model
+from rig.reduction.coefficients import Coefficients, call_model, corrected
 from rig.reduction.geometry import StandBGeometry, with_inputs
 from rig.reduction.iteration import ReductionSettings
 from rig.reduction.readings import Measured, reading_inputs, reading_value
@@ -125,6 +125,7 @@ def evaluate(
         nu, why = call_model(coefficients, l / g.a, c / g.a, alpha)
         if nu is None:
             return state, dict.fromkeys(DRIVEN[1:], why)
+        nu = corrected(nu, values)
         state.update(nu_T=nu[0], nu_v=nu[1], nu_0=nu[2])
         reasons = {}
         for name, formula in formulas.items():

@@ -3,7 +3,8 @@
 Keys: ``model`` (rigid, linear, fastsim, kinematic; required), ``poisson`` (combined Poisson
 ratio of the pair [1] in [0, 0.5]; required - physical input), ``n`` (cells across 2a, optional:
 the model's default), ``surrogate`` (table or direct calls, default true), ``table_points``
-(nodes of the surrogate table per axis l/a, c/a, log alpha'; default (41, 9, 9)) and
+(nodes of the surrogate table per axis l/a, c/a, log alpha'; default (41, 9, 9)),
+``error_budget`` (the reduction carries the law's numerical error at each point, default false) and
 ``effects`` (rig.contact effect keywords, e.g. ``{ psi = 1.2 }``; each must be supported by the
 model and in its range - checked by building the effect's parameter object, which costs nothing).
 """
@@ -19,7 +20,7 @@ from rig.errors import ParameterError
 from rig.scenes import tables as T
 from rig.stands.base import ContactSpec
 
-KEYS = ("model", "poisson", "n", "surrogate", "table_points", "effects")
+KEYS = ("model", "poisson", "n", "surrogate", "table_points", "error_budget", "effects")
 TABLE_AXES = ("l_over_a", "c_over_a", "log_alpha")
 MAX_TABLE_POINTS = 1001
 
@@ -65,4 +66,4 @@ def parse_contact(table: Mapping[str, object], where: str = "contact") -> Contac
                          for k, p in enumerate(points))
     effects = parse_effects(table.get("effects"), model, T.dotted(where, "effects"))
     return ContactSpec(model=model, n=n, poisson=poisson, effects=effects, surrogate=surrogate,
-                       table_points=table_points)
+                       table_points=table_points, error_budget=T.flag(table, "error_budget", where, False))

@@ -57,7 +57,9 @@ class ContactSpec:
     model: "rigid" | "linear" | "fastsim" | "kinematic"; n: cells across 2a (None: default);
     poisson: combined Poisson ratio of the pair [1]; effects: rig.contact effect keywords;
     surrogate: evaluate through a table over (l/a, c/a, log alpha') built once and cached on
-    disk (True) or call the model directly (False); table_points: table nodes per axis.
+    disk (True) or call the model directly (False); table_points: table nodes per axis;
+    error_budget: the reduction estimates the law's numerical error at every reduced point (two
+    direct solves, on n and 2n cells; rig.contact.numerical_error) and carries it in its budget.
     """
 
     model: str
@@ -66,6 +68,7 @@ class ContactSpec:
     effects: Mapping[str, float] = field(default_factory=dict)
     surrogate: bool = True
     table_points: tuple[int, int, int] = (41, 9, 9)
+    error_budget: bool = False
 
 
 @dataclass(frozen=True)

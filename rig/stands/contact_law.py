@@ -42,10 +42,12 @@ from pathlib import Path
 import numpy as np
 
 from rig import validate
+from rig.contact.numerical_error import converged_error
 from rig.contact.solve import solve
 from rig.contact.surrogate import SurrogateTable, TableDomain, check_model_inputs, table_inputs
 from rig.contact.surrogate_cache import CacheOutcome, load_or_build
 from rig.errors import ConvergenceError, ParameterError
+from rig.reduction.coefficients import OutsideModelDomain
 from rig.stands.base import ContactSpec
 
 FD_STEP = 1e-4  # central-difference step of DirectLaw: in l/a, c/a [a] and in log(alpha')
@@ -58,13 +60,15 @@ class ContactLaw(ABC):
     """(nu_T, nu_v, nu_0) of the canonical case (v > 0, w0 > 0) at (l/a, c/a, alpha').
 
     model, shape, b_over_a, poisson, n, effects: the fixed inputs of ``solve`` (checked);
-    rolling_length: f/a of the rolling-resistance effect (0 when off).
+    rolling_length: f/a of the rolling-resistance effect (0 when off); error_budget: the
+    reduction carries the law's numerical error (ContactSpec.error_budget; set by make_contact_law).
     """
 
     def __init__(self, model: str, shape: str, b_over_a: float, poisson: float, n: int, effects: tuple) -> None:
         self.model, self.shape, self.b_over_a, self.poisson, self.n = model, shape, b_over_a, poisson, n
         self.effects = dict(effects)
         self.rolling_length = float(self.effects.get("rolling_length", 0.0))
+        self.error_budget = False
 
     def __call__(self, l_over_a, c_over_a, alpha):
         """(nu_T, nu_v, nu_0) [1], floats for scalar input, else arrays of the broadcast shape."""
@@ -90,6 +94,13 @@ class ContactLaw(ABC):
     def value_one(self, l_over_a: float, c_over_a: float, alpha: float) -> np.ndarray:
         """Values (3,) at one state."""
         return self._values(*_flat(l_over_a, c_over_a, alpha))[:, 0]
+
+    def numerical_error(self, l_over_a: float, c_over_a: float, alpha: float) -> np.ndarray:
+        """|nu - converged model| (3,) of nu_T, nu_v, nu_0 [1] at one state: the grid's and the
+        table's error together (rig.contact.numerical_error; two direct solves)."""
+        fixed = dict(shape=self.shape, b_over_a=self.b_over_a, poisson=self.poisson, **self.effects)
+        return converged_error(self.value_one(l_over_a, c_over_a, alpha), self.model, fixed, self.n,
+                               (l_over_a, c_over_a, alpha))
 
     @abstractmethod
     def _values(self, l: np.ndarray, c: np.ndarray, a: np.ndarray) -> np.ndarray:
@@ -183,6 +194,13 @@ def make_contact_law(
     """
     if not isinstance(spec, ContactSpec):
         raise ParameterError("spec", spec, "a rig.stands.base.ContactSpec")
+    law = _law(spec, shape, b_over_a, domain, cache_directory, progress, workers)
+    law.error_budget = spec.error_budget
+    return law
+
+
+def _law(spec, shape, b_over_a, domain, cache_directory, progress, workers) -> ContactLaw:
+    """make_contact_law's law, before its error budget is set."""
     if not spec.surrogate:
         return DirectLaw(*check_model_inputs(spec.model, shape, b_over_a, spec.poisson, spec.n, spec.effects))
     if domain is None:
@@ -193,6 +211,30 @@ def make_contact_law(
                           effects=dict(spec.effects), domain=domain, points=tuple(spec.table_points))
     table, outcome = load_or_build(inputs, directory=cache_directory, progress=progress, workers=workers)
     return TableLaw(table, outcome)
+
+
+class LawCoefficients:
+    """A stand's law as the reduction asks it: coefficients(l/a, c/a, alpha') -> (nu_T, nu_v, nu_0)
+    as floats, OutsideModelDomain (naming the coordinate and the domain) outside ``domain``.
+
+    numerical_error(l/a, c/a, alpha') -> (3,) [1], the law's error against the converged model
+    there, is offered when the law carries an error budget (the scene's [contact] error_budget);
+    it is None otherwise, and the reduction adds no component.
+    """
+
+    def __init__(self, law, domain: TableDomain) -> None:
+        self.law = law
+        self.domain = domain
+        self.numerical_error = law.numerical_error if getattr(law, "error_budget", False) else None
+
+    def __call__(self, l_over_a: float, c_over_a: float, alpha: float) -> tuple[float, float, float]:
+        d = self.domain
+        for name, x, (lo, hi) in (("l/a", l_over_a, d.l_over_a), ("c/a", c_over_a, d.c_over_a), ("alpha'", alpha, d.alpha)):
+            if not lo <= x <= hi:
+                raise OutsideModelDomain(name, x, f"[{lo:.6g}, {hi:.6g}], the domain of the stand's contact law",
+                                         hint="the rolling point or alpha' left the table (hard case 6)")
+        nu = np.asarray(self.law(float(l_over_a), float(c_over_a), float(alpha)), dtype=float)
+        return tuple(float(x) for x in nu.reshape(3))
 
 
 @dataclass(frozen=True)

@@ -30,7 +30,8 @@ import pytest
 from rig.reduction import stand_a
 from rig.reduction.readings import Measured
 from rig.stands.base import ContactSpec, DriveMode
-from rig.stands.yoke.reduction import coefficients, point_readings
+from rig.stands.contact_law import LawCoefficients
+from rig.stands.yoke.reduction import point_readings
 from rig.stands.yoke.stand import YokeStand
 
 REPEATS = 200
@@ -53,7 +54,7 @@ def repeats(tmp_path_factory):
         spec = ContactSpec("rigid", None, 0.3, table_points=(21, 5, 2))
         stand = YokeStand({"mu": 0.4}, {name: {} for name in EFFECTS}, spec, DriveMode.QUASI_STATIC)
         geometry = stand.params.geometry_at(1.06e-3)
-        law = coefficients(*stand.law(geometry.b_over_a(96.2), geometry))
+        law = LawCoefficients(*stand.law(geometry.b_over_a(96.2), geometry))
         errors, u, expanded = (np.empty((REPEATS, len(NAMES))) for _ in range(3))
         for r in range(REPEATS):
             rng = np.random.default_rng(np.random.SeedSequence([SEED, r]))

@@ -18,7 +18,7 @@ from rig.reduction.iteration import ReductionSettings
 from rig.reduction.readings import Measured
 from rig.reduction.result import Start, reduce_point
 from rig.contact.surrogate import TableDomain
-from rig.stands.yoke.reduction import coefficients as yoke_coefficients
+from rig.stands.contact_law import LawCoefficients
 from rig.wheel_kinematics import ratio_for_l
 from tests.reduction.synthetic import analytic_coefficients, rigid_coefficients, stand_a_readings, stand_a_truth
 from tests.reduction.synthetic import stand_b_readings
@@ -112,7 +112,7 @@ def test_when_the_drivers_denominator_cannot_be_checked_everything_it_fed_goes()
 def test_outside_the_laws_domain_the_reason_names_the_domain_not_a_nan():
     # known problem 4: a rolling point outside the stand law's domain
     domain = TableDomain((-0.2, 0.2), (0.0, 0.9), (0.1, 3.0))
-    law = yoke_coefficients(lambda l, c, a: analytic_coefficients(float(l), float(c), float(a)), domain)
+    law = LawCoefficients(lambda l, c, a: analytic_coefficients(float(l), float(c), float(a)), domain)
     truth, readings = _point_a(analytic_coefficients, l_over_a=0.3)
     point = stand_a.reduce(readings, law)
     for name in ("alpha_prime", "mu_v", "mu_T"):

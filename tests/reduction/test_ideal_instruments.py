@@ -19,7 +19,8 @@ import pytest
 
 from rig.reduction import stand_a
 from rig.stands.base import ContactSpec, DriveMode
-from rig.stands.yoke.reduction import coefficients, point_readings
+from rig.stands.contact_law import LawCoefficients
+from rig.stands.yoke.reduction import point_readings
 from rig.stands.yoke.stand import YokeStand
 from rig.wheel_kinematics import dl_dratio
 from sensors import Adc
@@ -37,7 +38,7 @@ def ideal(tmp_path_factory):
         stand = YokeStand({"mu": 0.4}, {}, ContactSpec("rigid", None, 0.3, table_points=(21, 5, 2)),
                           DriveMode.QUASI_STATIC)
         geometry = stand.params.geometry_at(SETTINGS["delta_h_m"])
-        law = coefficients(*stand.law(geometry.b_over_a(96.2), geometry))
+        law = LawCoefficients(*stand.law(geometry.b_over_a(96.2), geometry))
         forbidden = [mock.patch.object(cls, "sample", side_effect=AssertionError(f"{cls.__name__} called"))
                      for cls in NOISE_CODE]
         for patch in forbidden:

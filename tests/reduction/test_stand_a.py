@@ -206,3 +206,38 @@ def test_any_counts_and_readings_give_finite_values_or_nan_with_a_reason(n1, n2,
     for name, value in point.values.items():
         assert math.isfinite(value) or point.reasons.get(name), name
         assert math.isnan(point.uncertainties[name]) or point.uncertainties[name] >= 0.0
+
+
+class _WithNumericalError:
+    """Coefficients that state an error bound (as rig.stands.contact_law.LawCoefficients does with
+    an error budget): the reduction must carry it, and only it, as the contact model's source."""
+
+    def __init__(self, coefficients, bound):
+        self.coefficients, self.bound, self.asked = coefficients, np.asarray(bound, dtype=float), []
+
+    def __call__(self, l_over_a, c_over_a, alpha):
+        return self.coefficients(l_over_a, c_over_a, alpha)
+
+    def numerical_error(self, l_over_a, c_over_a, alpha):
+        self.asked.append((l_over_a, c_over_a, alpha))
+        return self.bound
+
+
+def test_a_stated_model_error_is_a_budget_source_of_its_own_and_moves_no_value():
+    from rig.reduction.coefficients import MODEL_SOURCE, NU_ERRORS
+
+    coefficients = rigid_coefficients(1.0)  # alpha'-independent: d mu_v/d nu_v = -mu_v/nu_v exactly (eq. 33)
+    truth, readings = exact_point(0.3, MU, 96.2, coefficients)
+    plain = stand_a.reduce(readings, coefficients)
+    stated = _WithNumericalError(coefficients, [0.0, 0.002, 0.001])
+    point = stand_a.reduce(readings, stated)
+    assert stated.asked == [(pytest.approx(plain.values["l_over_a"]), pytest.approx(plain.values["c_over_a"]),
+                             pytest.approx(plain.values["alpha_prime"]))]  # once, at the reduced state
+    for name in ("mu_v", "mu_T", "l_over_a"):
+        assert point.values[name] == pytest.approx(plain.values[name], rel=1e-12)
+    by_source = point.budget.by_source()
+    assert MODEL_SOURCE in by_source.index and MODEL_SOURCE not in plain.budget.by_source().index
+    assert NU_ERRORS[0] not in point.budget.variance.index  # a zero bound adds no input
+    expected = (plain.values["mu_v"] / plain.values["nu_v"] * 0.002 / math.sqrt(3.0)) ** 2  # rectangular
+    assert point.budget.variance.loc[NU_ERRORS[1], "mu_v"] == pytest.approx(expected, rel=1e-3)
+    assert point.uncertainties["mu_v"] ** 2 == pytest.approx(plain.uncertainties["mu_v"] ** 2 + expected, rel=1e-3)

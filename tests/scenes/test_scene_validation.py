@@ -84,6 +84,16 @@ def test_out_of_range_values_name_the_key_and_the_range(old, new, name, valid):
     assert valid in info.value.valid
 
 
+def test_the_error_budget_is_named_or_off_and_misspelt_is_an_error():
+    assert parse().contact.error_budget is False  # not named: the reduction adds nothing, costs nothing
+    assert parse({"poisson = 0.3": "poisson = 0.3\nerror_budget = true"}).contact.error_budget is True
+    with pytest.raises(UnknownNameError, match="did you mean 'error_budget'"):
+        parse({"poisson = 0.3": "poisson = 0.3\nerror_budjet = true"})
+    with pytest.raises(ParameterError) as info:
+        parse({"poisson = 0.3": 'poisson = 0.3\nerror_budget = "yes"'})
+    assert info.value.name == "contact.error_budget"
+
+
 def test_contact_effect_the_model_cannot_represent_is_an_error():
     with pytest.raises(ParameterError, match="not available for model 'rigid'"):
         parse({'poisson = 0.3': 'poisson = 0.3\neffects = { psi = 1.5 }'})

@@ -228,3 +228,19 @@ def test_make_contact_law_builds_only_what_the_scene_names(tmp_path):
         make_contact_law({"model": "rigid"}, "ellipse", 1.0, duck)
     with pytest.raises(ParameterError, match="psi"):
         make_contact_law(ContactSpec("rigid", 8, 0.3, effects={"psi": 2.0}, surrogate=False), "line", 1.0, None)
+
+
+def test_the_error_budget_is_offered_only_when_the_spec_names_it(tmp_path):
+    from rig.stands.contact_law import LawCoefficients
+
+    for budget in (False, True):
+        spec = ContactSpec(model="kinematic", n=8, poisson=0.3, surrogate=True, table_points=(7, 7, 4),
+                           error_budget=budget)
+        law = make_contact_law(spec, "line", 1.0, DOMAIN, cache_directory=tmp_path)
+        coefficients = LawCoefficients(law, DOMAIN)
+        if not budget:
+            assert coefficients.numerical_error is None
+            continue
+        error = coefficients.numerical_error(0.5, 0.2, 1.0)
+        assert error.shape == (3,) and np.all(np.isfinite(error)) and np.all(error >= 0.0)
+        assert 1e-5 < error[1] < 0.05  # an 8-cell table: a real but bounded error

@@ -28,31 +28,16 @@ from rig.contact.surrogate import TableDomain
 from rig.errors import LogFormatError
 from rig.logbook import PointRecord, read_points
 from rig.reduction import stand_b
-from rig.reduction.coefficients import OutsideModelDomain
 from rig.reduction.iteration import ReductionSettings
 from rig.reduction.readings import Measured, converter_mean
 from rig.reduction.table import column_output, reduced_table, with_damaged
+from rig.stands.contact_law import LawCoefficients
 from rig.stands.disc_roller.contact import Law
 from rig.stands.disc_roller.instruments import CHANNELS, record_from_fields
 from rig.stands.disc_roller.parameters import StandBParameters
 
 CALIBRATION_FIELDS = ("sensitivity", "offset", "u_sensitivity", "u_offset", "cov_sensitivity_offset",
                       "residual_std", "n_steps")
-
-
-def coefficients(law: Law, domain: TableDomain) -> stand_b.Coefficients:
-    """Scalar coefficients(l/a, c/a, alpha') of a stand law; raises OutsideModelDomain (naming the
-    coordinate and the domain) outside its domain."""
-
-    def evaluate(l_over_a: float, c_over_a: float, alpha: float) -> tuple[float, float, float]:
-        for name, x, (lo, hi) in (("l/a", l_over_a, domain.l_over_a), ("c/a", c_over_a, domain.c_over_a),
-                                  ("alpha'", alpha, domain.alpha)):
-            if not lo <= x <= hi:
-                raise OutsideModelDomain(name, x, f"[{lo:.6g}, {hi:.6g}], the domain of the stand's contact law")
-        nu = np.asarray(law(float(l_over_a), float(c_over_a), float(alpha)), dtype=float)
-        return tuple(float(x) for x in nu.reshape(3))
-
-    return evaluate
 
 
 def _value(group, name: str, where: str) -> float:
@@ -117,7 +102,7 @@ def reduce_log(
         except LogFormatError as error:  # a damaged point: NaN with the reason, the others go on
             damaged[index] = str(error)
             continue
-        law = coefficients(law_for(readings.b_over_a), domain_for(readings.b_over_a))
+        law = LawCoefficients(law_for(readings.b_over_a), domain_for(readings.b_over_a))
         points.append(stand_b.reduce(readings, law, params.geometry, settings))
         reduced.append(index)
     frame = reduced_table(points)

@@ -34,12 +34,12 @@ from rig.errors import LogFormatError
 from rig.logbook import PointRecord, read_points
 from rig.logbook.truth import read_truth
 from rig.reduction import stand_a
-from rig.reduction.coefficients import OutsideModelDomain
 from rig.reduction.geometry import StandAGeometry
 from rig.reduction.iteration import ReductionSettings
 from rig.reduction.readings import ForceCalibration, Measured, converter_mean, scale_mean
 from rig.reduction.table import TRUTH_COLUMNS, column_output, reduced_table, with_damaged
 from rig.contact.surrogate import TableDomain
+from rig.stands.contact_law import LawCoefficients
 from rig.stands.yoke.contact_forces import Law
 from rig.stands.yoke.instruments import BALANCE, CHANNELS, DYNAMOMETER
 from rig.stands.yoke.parameters import YokeParameters
@@ -49,22 +49,6 @@ UNITS = {"omega_1_rad_s": "rad/s", "spin_rad_s": "rad/s", "l_m": "m", "c_m": "m"
 
 LawFor = Callable[[float, StandAGeometry], tuple[Law, TableDomain]]
 """law_for(b_over_a, geometry) -> (law, its domain)."""
-
-
-def coefficients(law: Law, domain: TableDomain) -> stand_a.Coefficients:
-    """The reduction's scalar coefficients(l/a, c/a, alpha') from a stand law; raises
-    OutsideModelDomain (naming the coordinate and the domain) outside the law's domain."""
-
-    def evaluate(l_over_a: float, c_over_a: float, alpha: float) -> tuple[float, float, float]:
-        for name, x, (lo, hi) in (("l/a", l_over_a, domain.l_over_a), ("c/a", c_over_a, domain.c_over_a),
-                                  ("alpha'", alpha, domain.alpha)):
-            if not lo <= x <= hi:
-                raise OutsideModelDomain(name, x, f"[{lo:.6g}, {hi:.6g}], the domain of the stand's contact law",
-                                         hint="the rolling point or alpha' left the table (hard case 6)")
-        nu = law(float(l_over_a), float(c_over_a), float(alpha))
-        return tuple(float(np.asarray(x).ravel()[0]) for x in nu)
-
-    return evaluate
 
 
 def _quantity(group, name: str, where: str) -> float:
@@ -136,7 +120,7 @@ def reduce_log(path, params: YokeParameters, law_for: LawFor,
             damaged[index] = str(error)
             continue
         law, domain = law_for(readings.b_over_a, geometry)
-        points.append(stand_a.reduce(readings, coefficients(law, domain), geometry, settings))
+        points.append(stand_a.reduce(readings, LawCoefficients(law, domain), geometry, settings))
         reduced.append(index)
         out_of_range.append(_out_of_range(record))
     frame = reduced_table(points, _truth_rows(path, reduced))

@@ -12,7 +12,8 @@ from rig.logbook import LogWriter, RunMetadata, read_point, read_reduced, utc_ti
 from rig.reduction.coefficients import OutsideModelDomain
 from rig.stands.base import ContactSpec, DriveMode
 from rig.contact.surrogate import TableDomain
-from rig.stands.yoke.reduction import coefficients, point_readings
+from rig.stands.contact_law import LawCoefficients
+from rig.stands.yoke.reduction import point_readings
 from tests.stands.yoke import helpers, standin
 
 
@@ -52,7 +53,7 @@ def test_readings_come_from_the_record(logged):
 
 def test_coefficients_outside_the_domain_say_why():
     """The reduction turns this error into NaN with the reason (rig.reduction.coefficients)."""
-    f = coefficients(standin.coefficients, TableDomain((-1.0, 1.0), (0.0, 0.5), (0.1, 2.0)))
+    f = LawCoefficients(standin.coefficients, TableDomain((-1.0, 1.0), (0.0, 0.5), (0.1, 2.0)))
     assert all(math.isfinite(x) for x in f(0.2, 0.1, 0.5))
     with pytest.raises(OutsideModelDomain, match="l/a = 1.2"):
         f(1.2, 0.1, 0.5)
