@@ -118,10 +118,10 @@ def coefficients_from_mat(mat_file: Path, case: SpinCase) -> tuple[float, float]
     start = next(i for i, r in enumerate(rows) if r[:3] == ["%", "I", "IGS"]) + 1
     data = np.array([[float(v) for v in r[:7]] for r in rows[start:] if r and not r[0].startswith("%")])
     index = data[:, 0].astype(int) - 1
-    x = xl + (index % mx + 0.5) * dx
-    y = yl + (index // mx + 0.5) * dy
     if index.max() >= mx * my:
         raise ValueError(f"element index {index.max() + 1} outside the {mx} x {my} grid in {mat_file}")
+    x = xl + (index % mx + 0.5) * dx
+    y = yl + (index // mx + 0.5) * dy
     pn, px, py = data[:, 4], data[:, 5], data[:, 6]
     area = dx * dy
     normal_force = pn.sum() * area
@@ -162,7 +162,8 @@ def write_rows(path: Path, rows: list[dict[str, float]]) -> None:
         writer = csv.DictWriter(tmp, fieldnames=COLUMNS)
         writer.writeheader()
         for r in rows:
-            writer.writerow({"alpha_prime": f"{r['alpha_prime']:g}", "elements_across": int(r["elements_across"]),
+            writer.writerow({"alpha_prime": f"{r['alpha_prime']:g}",
+                             "elements_across": int(r["elements_across"]),
                              "nu_v": f"{r['nu_v']:.6f}", "nu_0": f"{r['nu_0']:.6f}",
                              "cpu_s": f"{r['cpu_s']:.3f}"})
     os.replace(tmp.name, path)
@@ -184,8 +185,8 @@ def main() -> None:
             if any(r["alpha_prime"] == float(f"{alpha:g}") and r["elements_across"] == n for r in rows):
                 continue
             row = run_case(args.contact.resolve(), SpinCase(alpha, n), workdir)
-            print(f"alpha'={alpha:g} n={n}: nu_v={row['nu_v']:.6f} nu_0={row['nu_0']:.6f} cpu={row['cpu_s']:.2f} s",
-                  flush=True)
+            print(f"alpha'={alpha:g} n={n}: nu_v={row['nu_v']:.6f} nu_0={row['nu_0']:.6f}"
+                  f" cpu={row['cpu_s']:.2f} s", flush=True)
             rows.append(row)
             write_rows(args.out, rows)
 
