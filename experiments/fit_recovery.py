@@ -6,7 +6,10 @@ on) with mu and Psi as given, reduce it (rig run), then ``rig.fit.fit_data(reduc
 effect set ranks first by AIC. Prints one line per repeat and the coverage and ranking rates.
 
     python experiments/fit_recovery.py --psi 1.6 --repeats 40 --points 12 --gate 10
-    python experiments/fit_recovery.py --psi 1.0 --repeats 40 --points 12 --gate 10
+    python experiments/fit_recovery.py --psi 1.0 --repeats 40 --points 12 --gate 10 --first-seed 3000
+
+--keep DIR keeps the runs (log.h5, reduced.csv) for a later look or a refit (a kept run is reduced
+again with the current code, not simulated again: the simulation is seeded).
 
 Never imported by rig; tests/fit/test_recovery.py runs `one_repeat` with a small scene.
 """
@@ -21,7 +24,7 @@ from importlib import resources
 from pathlib import Path
 
 from rig.fit import fit_data
-from rig.runner import run_scene
+from rig.runner import reduce_log_file, run_scene
 from rig.scenes.load import parse_scene
 
 
@@ -50,7 +53,10 @@ def one_repeat(seed: int, *, mu: float, psi: float, points: int, gate_s: float, 
     text = scene_text(mu=mu, psi=psi, seed=seed, points=points, gate_s=gate_s, n=n, table_points=table_points)
     scene = parse_scene(text, name=f"recovery_{seed}", source="experiments/fit_recovery.py")
     out = folder / f"run_{seed}"
-    run_scene(scene, out, progress=False)
+    if (out / "reduced.csv").is_file():  # a kept run (--keep): reduced again with the current code
+        reduce_log_file(out / "log.h5")
+    else:
+        run_scene(scene, out, progress=False)
     t0 = time.perf_counter()
     report = fit_data(out / "reduced.csv", ["mu", "psi"])
     seconds = time.perf_counter() - t0
@@ -73,12 +79,15 @@ def main() -> None:
     parser.add_argument("--first-seed", type=int, default=2000)
     parser.add_argument("--points", type=int, default=12, help="points per series (fig10: 24)")
     parser.add_argument("--gate", type=float, default=10.0, help="gate time [s] (fig10: 20)")
+    parser.add_argument("--keep", type=Path, default=None,
+                        help="keep the runs in this folder; a run already there is reduced again, not simulated")
     args = parser.parse_args()
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
+        folder = Path(tmp) if args.keep is None else args.keep
         for k in range(args.repeats):
             r = one_repeat(args.first_seed + k, mu=args.mu, psi=args.psi, points=args.points, gate_s=args.gate,
-                           folder=Path(tmp))
+                           folder=folder)
             rows.append(r)
             print(f"seed {r['seed']}: mu {r['mu']:.4f} [{r['mu_lo']:.4f}, {r['mu_hi']:.4f}]  psi {r['psi']:.3f} "
                   f"[{r['psi_lo']:.3f}, {r['psi_hi']:.3f}]  chi2/dof {r['chi2_dof']:.2f}  "

@@ -3,7 +3,7 @@
 chi2(theta) = r^T V^-1 r, r = y - f(theta), V = diag(u_eff^2 - diag C) + C: u_eff^2 = u^2 +
 (df/dl u_l)^2 (Orear's effective variance: the rolling point l/a is itself measured; df/dl from
 the model at the start and again at the first optimum, then held while the fit is repeated) and
-C the covariance of errors common to all points (a calibration, Observations.common_cov; its
+C the covariance of errors shared between points (a calibration, a zero drift; Observations.common_cov; its
 diagonal is already inside u). The residuals are whitened with the Cholesky factor of V and
 minimised with scipy.optimize.least_squares (trust-region reflective, bounds = the ranges).
 
