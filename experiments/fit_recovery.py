@@ -24,6 +24,7 @@ from importlib import resources
 from pathlib import Path
 
 from rig.fit import fit_data
+from rig.fit.engine import FitConvergenceError
 from rig.runner import reduce_log_file, run_scene
 from rig.scenes.load import parse_scene
 
@@ -82,19 +83,26 @@ def main() -> None:
     parser.add_argument("--keep", type=Path, default=None,
                         help="keep the runs in this folder; a run already there is reduced again, not simulated")
     args = parser.parse_args()
-    rows = []
+    rows, failed = [], []
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp) if args.keep is None else args.keep
         for k in range(args.repeats):
-            r = one_repeat(args.first_seed + k, mu=args.mu, psi=args.psi, points=args.points, gate_s=args.gate,
-                           folder=folder)
+            try:
+                r = one_repeat(args.first_seed + k, mu=args.mu, psi=args.psi, points=args.points, gate_s=args.gate,
+                               folder=folder)
+            except FitConvergenceError as error:  # counted: neither covered nor ranked
+                failed.append(args.first_seed + k)
+                print(f"seed {args.first_seed + k}: the fit failed: {error}", flush=True)
+                continue
             rows.append(r)
             print(f"seed {r['seed']}: mu {r['mu']:.4f} [{r['mu_lo']:.4f}, {r['mu_hi']:.4f}]  psi {r['psi']:.3f} "
                   f"[{r['psi_lo']:.3f}, {r['psi_hi']:.3f}]  chi2/dof {r['chi2_dof']:.2f}  "
                   f"psi ranks first {r['psi_ranks_first']}  fit {r['fit_s']:.1f} s", flush=True)
-    m = len(rows)
+    m = len(rows) + len(failed)
     both = sum(r["mu_covered"] and r["psi_covered"] for r in rows)
     print(f"truth mu = {args.mu}, psi = {args.psi}; {m} repeats, {args.points} points per series, gate {args.gate} s")
+    if failed:
+        print(f"{len(failed)} fit(s) failed, counted as not covered and not ranked: seeds {failed}")
     print(f"mu covered {sum(r['mu_covered'] for r in rows)}/{m}, psi covered {sum(r['psi_covered'] for r in rows)}/{m}, "
           f"both {both}/{m}")
     print(f"mu + psi ranks above mu alone (AIC) in {sum(r['psi_ranks_first'] for r in rows)}/{m}; "
