@@ -79,7 +79,6 @@ class StandAReadings:
     b_over_a: float
     zero_drift_u: float = 0.0
 
-
     def __post_init__(self) -> None:
         validate.integer("counts_1", self.counts_1, 0)
         validate.integer("counts_2", self.counts_2, 0)
@@ -112,7 +111,8 @@ def input_set(
         InputQuantity("dyn_sensitivity_V_per_N", cal.sensitivity, cal.u_sensitivity, "V/N", "dynamometer calibration"),
         InputQuantity("dyn_offset_V", cal.offset, cal.u_offset, "V", "dynamometer calibration"),
         InputQuantity("dyn_weights_N", 0.0, cal.u_weights, "N", "calibration weights"),
-        *([InputQuantity(ZERO_DRIFT, 0.0, r.zero_drift_u, "V", "dynamometer zero drift")] if r.zero_drift_u > 0 else []),
+        *([InputQuantity(ZERO_DRIFT, 0.0, r.zero_drift_u, "V", "dynamometer zero drift")]
+          if r.zero_drift_u > 0 else []),
         *reading_inputs("T2", "N_m", "N m", r.brake_moment, "tangent balance"),
     ]
     units = {f.name: f.metadata["unit"] for f in dataclasses.fields(geometry)}

@@ -8,6 +8,8 @@
   sampled at ``dynamometer_rate_Hz`` over the gate; the drift (if on) is one random walk over the
   run, evaluated at the point's place in the run schedule (calibration first, then point k at
   calibration end + k ``point_period_s``), so points stay independent yet share one drift path.
+  Each point records what the reduction needs for the zero's drift since the calibration
+  (:func:`zero_drift_readings`: gain, the walk's variance rate, the zero's age).
 * Calibration once per run with weights at the dynamometer itself (seed 000 3.1.1: weights of
   +-0.098 N accuracy, 102/42.5 x 0.098 N = 0.235 N on F_y): the calibrated quantity is the force
   on the dynamometer [N]; the weights' uncertainty is inside the fit's covariance.
