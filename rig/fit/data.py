@@ -5,7 +5,8 @@ Two sources (docs/fit.md):
   nu_T, nu_v or nu_0 (eqs. 26-28) versus alpha', l/a or c/a, the other conditions from the
   sidecar; the uncertainty u of the digitised y is given by the caller (the format has none);
 * a stand-A run (``log.h5`` or its ``reduced.csv`` next to it): the measured F_y/F_N = mu nu_v
-  (eq. 28), u from the dynamometer's stated u(F_y); l/a, c/a, i_k as reduced (eqs. 29-32) and
+  (eq. 28), u from the dynamometer's stated u(F_y), the covariance between points from its one
+  calibration and its zero drift since then (when the log records the drift); l/a, c/a, i_k as reduced (eqs. 29-32) and
   alpha' = mu K with K = 10 (b/a)(v/w0)/R_x from the stand's geometry (eq. 21, line contact).
 The data is never modified; NaN in a used column is a ParameterError naming the row.
 """
@@ -48,8 +49,9 @@ class Observations:
     l, c: rolling point [units of a]; u_l: its standard uncertainty (0 when exact);
     alpha: alpha' [1] where fixed by the data, NaN where alpha' = mu alpha_per_mu;
     b_over_a [1]; series: label of each point's curve; stand: the Stand when the data is a run;
-    common_cov: (N, N) covariance of errors shared by all points (the dynamometer's calibration
-    sensitivity and offset, one calibration per run), already inside u; None when there is none.
+    common_cov: (N, N) covariance of errors shared between points (the dynamometer's calibration
+    sensitivity and offset, one calibration per run, and its zero drift since that calibration,
+    a random walk), already inside u; None when there is none.
     """
 
     quantity: np.ndarray
@@ -196,7 +198,7 @@ def load_stand_a_run(path: str | Path, scene=None, *, n: int | None = None) -> O
     in l/a or F_y (with a reason) are left out and counted in ``notes``; NaN anywhere else in
     a used column is an error.
     """
-    from rig.logbook.reader import read_calibration, read_metadata, read_settings
+    from rig.logbook.reader import read_calibration, read_metadata, read_readings, read_settings
     from rig.logbook.reduced import read_reduced
     from rig.scenes.load import parse_scene
 
@@ -243,6 +245,10 @@ def load_stand_a_run(path: str | Path, scene=None, *, n: int | None = None) -> O
     notes = [f"{dropped} point(s) without l/a or F_y (reduction's reason) left out"] if dropped else []
     common, note = _calibration_covariance(read_calibration(log).loc[rows], y, f_n, geometries)
     notes.append(note)
+    drift, note = _drift_covariance(read_readings(log).loc[rows], read_calibration(log).loc[rows], f_n, geometries)
+    notes.append(note)
+    if drift is not None:
+        common = drift if common is None else common + drift
     return Observations(
         quantity=np.full(y.size, "F_y_per_F_N"), y=y, u=u,
         x=_finite("l_over_a", table["l_over_a"].to_numpy(), rows), x_label="l/a",
@@ -278,6 +284,35 @@ def _calibration_covariance(cal: pd.DataFrame, y: np.ndarray, f_n: np.ndarray, g
     common = np.outer(a, a) * u_sens**2 + np.outer(b, b) * u_off**2 + (np.outer(a, b) + np.outer(b, a)) * cov_so
     return common, (f"dynamometer calibration common to all points (u(S)/S = {u_sens / sens:.2%}, u(s0) = "
                     f"{u_off:.3g} V): generalised least squares with its covariance")
+
+
+DRIFT_COLUMNS = ("dynamometer_gain", "dynamometer_drift_variance_rate_V2_s", "dynamometer_zero_age_s")
+
+
+def _drift_covariance(readings: pd.DataFrame, cal: pd.DataFrame, f_n: np.ndarray, geometries) -> tuple:
+    """Covariance of y = F_y/F_N from the dynamometer's zero drift since the calibration took the zero.
+
+    The zero walks as an input-referred random walk (sensors.noise.RandomWalkDrift) amplified g
+    times: cov(z_i, z_j) = g^2 D^2 min(t_i, t_j) [V^2] with t the zero's age at each point (the
+    log's readings, rig.stands.yoke.instruments.zero_drift_readings); dy/dz = -(lever_dyn/R_v)/(S F_N)
+    (eq. 33). Its diagonal is the reduction's ``dyn_zero_drift_V`` term, already inside u(F_y).
+    """
+    if any(c not in readings.columns for c in DRIFT_COLUMNS) or CAL + "sensitivity_V_N" not in cal.columns:
+        return None, ("the log does not record dynamometer 10's zero drift: no covariance between points "
+                      "beyond the calibration's")
+    gain, rate, age = (readings[c].to_numpy(dtype=float) for c in DRIFT_COLUMNS)
+    if not (np.allclose(gain, gain[0], rtol=0, atol=0) and np.allclose(rate, rate[0], rtol=0, atol=0)):
+        raise ParameterError("dynamometer drift readings", f"gain {sorted(set(gain))}, rate {sorted(set(rate))}",
+                             "one gain and one drift variance rate per run")
+    if rate[0] == 0.0:
+        return None, "dynamometer 10's zero drift is off in this log: no covariance between points from it"
+    sens = cal[CAL + "sensitivity_V_N"].to_numpy(dtype=float)
+    b = np.array([g.dynamometer_lever / g.yoke_lever for g in geometries]) / (sens * f_n)
+    cov = gain[0] ** 2 * rate[0] * np.minimum.outer(age, age) * np.outer(b, b)
+    return cov, (f"dynamometer 10's zero drift since the calibration (random walk, g D = "
+                 f"{gain[0] * math.sqrt(rate[0]):.3g} V/s^0.5): covariance g^2 D^2 min(t_i, t_j) between "
+                 f"points (t = {age.min():.0f}-{age.max():.0f} s after the zero) added to the generalised "
+                 "least squares")
 
 
 def is_digitised(path: str | Path, sidecar: str | Path | None) -> bool:

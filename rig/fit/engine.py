@@ -3,7 +3,7 @@
 chi2(theta) = r^T V^-1 r, r = y - f(theta), V = diag(u_eff^2 - diag C) + C: u_eff^2 = u^2 +
 (df/dl u_l)^2 (Orear's effective variance: the rolling point l/a is itself measured; df/dl from
 the model at the start and again at the first optimum, then held while the fit is repeated) and
-C the covariance of errors common to all points (a calibration, Observations.common_cov; its
+C the covariance of errors shared between points (a calibration, a zero drift; Observations.common_cov; its
 diagonal is already inside u). The residuals are whitened with the Cholesky factor of V and
 minimised with scipy.optimize.least_squares (trust-region reflective, bounds = the ranges).
 
@@ -30,6 +30,7 @@ from rig.fit.forward import ForwardModel
 DELTA_CHI2_95 = 3.841458820694124  # chi2 quantile 0.95, 1 degree of freedom
 CORRELATION_LIMIT = 0.95
 DL_STEP = 1e-3  # [units of a] finite-difference step of df/dl
+RETRY_NFEV_PER_PARAMETER = 1000  # evaluations of a second attempt when the first's 100 a parameter ran out
 
 
 class FitConvergenceError(ConvergenceError):
@@ -215,9 +216,16 @@ def _minimise(predict, y, weights, x0, lo, hi, label, max_nfev=None):
     def residual(theta):
         return weights(y - predict(theta))
 
+    def solve(start, budget):
+        return least_squares(residual, start, bounds=(lo, hi), x_scale=hi - lo, diff_step=1e-4, max_nfev=budget,
+                             xtol=1e-8, ftol=1e-8)
+
     try:
-        res = least_squares(residual, x0, bounds=(lo, hi), x_scale=hi - lo, diff_step=1e-4, max_nfev=max_nfev,
-                            xtol=1e-8, ftol=1e-8)
+        res = solve(x0, max_nfev)
+        if res.status == 0 and max_nfev is None:
+            # out of evaluations while still descending (seen in a profile at a range end, where the
+            # correlated drift covariance makes chi2 ~ 1e6 and the step crawls): go on once from there
+            res = solve(res.x, RETRY_NFEV_PER_PARAMETER * np.size(x0))
     except ValueError as error:
         raise FitConvergenceError(f"fit {label}: the least-squares solver stopped: {error}") from None
     if not np.all(np.isfinite(res.fun)) or (res.status <= 0 and max_nfev is None):

@@ -4,7 +4,8 @@ Per operating point (seed notes 2, "Implementation of the chain"):
     i_k = N2 z1/(N1 z2), w1 = 2 pi N1/(z1 T)                         counters over a common gate
     (c, l) from i_k, eqs. (29)-(31); l/a, c/a                          rig.wheel_kinematics
     v/w0 = r1/(sin alpha1 + i_k); alpha' = 10 mu (b/a)(v/w0)/R_x       eq. (21), line contact
-    F_y = [(s - s0)/S + e_w] (102 mm/R_v)                              dynamometer 10, eq. (33)
+    F_y = [(s - z - s0)/S + e_w] (102 mm/R_v)                          dynamometer 10, eq. (33);
+        z: the zero's drift since the calibration (value 0, u = zero_drift_u)
     (nu_T, nu_v, nu_0) = coefficients(l/a, c/a, alpha')               contact model (any)
     D = -(l - l2) nu_T - a nu_0                                        lever of eq. (35)
     mu_v = F_y/(F_N nu_v), mu_T = [T2 + F_y(Delta h - c)]/(F_N D)      eqs. (33), (35)
@@ -48,6 +49,8 @@ GUARDS = (Guard("mu_v", "nu_v"), Guard("mu_T", "D_m"))
 COUNT_U = float(COUNT_QUANTISATION_STD)
 """u of a gated count [count]: 1/sqrt(6), the difference of two uniform mark phases at the gate
 edges (triangular on (-1, 1); sensors.counters) - the instrument's own model, by import."""
+ZERO_DRIFT = "dyn_zero_drift_V"
+"""Input: the dynamometer zero's walk since the calibration [V] (value 0, u = zero_drift_u)."""
 GEOMETRY_INPUTS = ("l1", "l2", "alpha_1", "delta_h", "a", "r1", "radius_x", "dynamometer_lever", "yoke_lever")
 
 
@@ -59,7 +62,9 @@ class StandAReadings:
     normal_force F_N [N]; dynamometer_signal [V] with its calibration; brake_moment T2 [N m]
     from the tangent balance (positive when it resists wheel 2; its u_step is the scale step's
     bias); b_over_a [1] of the contact at this load (the same value the caller binds into the
-    coefficients).
+    coefficients); zero_drift_u [V]: standard uncertainty of the dynamometer's zero at this
+    point, the drift since the calibration took it (0: none stated, e.g. a log that does not
+    record the drift).
     """
 
     counts_1: int
@@ -72,6 +77,7 @@ class StandAReadings:
     dynamometer: ForceCalibration
     brake_moment: Measured
     b_over_a: float
+    zero_drift_u: float = 0.0
 
     def __post_init__(self) -> None:
         validate.integer("counts_1", self.counts_1, 0)
@@ -81,6 +87,7 @@ class StandAReadings:
         validate.number("gate_time", self.gate_time.value, 0.0, lo_open=True)
         validate.number("normal_force", self.normal_force.value, 0.0, lo_open=True)
         validate.number("b_over_a", self.b_over_a, 0.0, lo_open=True)
+        validate.number("zero_drift_u", self.zero_drift_u, 0.0)
 
 
 def input_set(
@@ -104,6 +111,8 @@ def input_set(
         InputQuantity("dyn_sensitivity_V_per_N", cal.sensitivity, cal.u_sensitivity, "V/N", "dynamometer calibration"),
         InputQuantity("dyn_offset_V", cal.offset, cal.u_offset, "V", "dynamometer calibration"),
         InputQuantity("dyn_weights_N", 0.0, cal.u_weights, "N", "calibration weights"),
+        *([InputQuantity(ZERO_DRIFT, 0.0, r.zero_drift_u, "V", "dynamometer zero drift")]
+          if r.zero_drift_u > 0 else []),
         *reading_inputs("T2", "N_m", "N m", r.brake_moment, "tangent balance"),
     ]
     units = {f.name: f.metadata["unit"] for f in dataclasses.fields(geometry)}
@@ -127,9 +136,9 @@ def _kinematics(n1: float, n2: float, marks_1: int, marks_2: int, alpha_1: float
 
 def _lateral_force(values: Mapping[str, float], g: StandAGeometry) -> float:
     """F_y [N] from the dynamometer signal and its calibration (eq. 33 lever)."""
-    force_dyn = eq.force_from_signal(
-        reading_value(values, "dyn_signal", "V"), values["dyn_sensitivity_V_per_N"], values["dyn_offset_V"]
-    ) + values["dyn_weights_N"]
+    signal = reading_value(values, "dyn_signal", "V") - values.get(ZERO_DRIFT, 0.0)
+    force_dyn = eq.force_from_signal(signal, values["dyn_sensitivity_V_per_N"], values["dyn_offset_V"]) + values[
+        "dyn_weights_N"]
     return eq.lateral_force_from_dynamometer(force_dyn, g.dynamometer_lever, g.yoke_lever)
 
 

@@ -43,6 +43,7 @@ class Reduction:
     stored_in_log: bool
     problem: str | None
     damaged: tuple[int, ...] = ()
+    notes: tuple[str, ...] = ()
 
     @property
     def problems(self) -> list[str]:
@@ -52,7 +53,7 @@ class Reduction:
             shown = ", ".join(map(str, self.damaged[:20])) + (" ..." if len(self.damaged) > 20 else "")
             lines.append(f"{len(self.damaged)} damaged point(s) reduced to NaN (reduced.csv's reason names the "
                          f"dataset and the bad value): {shown}")
-        return lines + ([self.problem] if self.problem else [])
+        return lines + list(self.notes) + ([self.problem] if self.problem else [])
 
 
 def damaged_points(table: pd.DataFrame) -> tuple[int, ...]:
@@ -94,10 +95,11 @@ def reduce_to_files(stand: Stand, log_path: Path, contact: ContactSpec, out_dir:
         raise RigError(f"stand {stand.name!r}: reduce_log returned {type(table).__name__}, not a DataFrame")
     table = attach_truth(table, read_truth_if_any(log_path))
     damaged = damaged_points(table)
+    notes = tuple(table.attrs.get("notes", ()))
     csv = out_dir / REDUCED_CSV
     table.to_csv(csv, index=True, index_label=table.index.name or "point")
     try:
         write_reduced(log_path, table)
     except (ParameterError, OSError) as error:  # e.g. a read-only log: reported; reduced.csv holds the table
-        return Reduction(table, csv, False, f"reduced table not stored in {log_path.name}: {error}", damaged)
-    return Reduction(table, csv, True, None, damaged)
+        return Reduction(table, csv, False, f"reduced table not stored in {log_path.name}: {error}", damaged, notes)
+    return Reduction(table, csv, True, None, damaged, notes)

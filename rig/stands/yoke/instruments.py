@@ -8,6 +8,8 @@
   sampled at ``dynamometer_rate_Hz`` over the gate; the drift (if on) is one random walk over the
   run, evaluated at the point's place in the run schedule (calibration first, then point k at
   calibration end + k ``point_period_s``), so points stay independent yet share one drift path.
+  Each point records what the reduction needs for the zero's drift since the calibration
+  (:func:`zero_drift_readings`: gain, the walk's variance rate, the zero's age).
 * Calibration once per run with weights at the dynamometer itself (seed 000 3.1.1: weights of
   +-0.098 N accuracy, 102/42.5 x 0.098 N = 0.235 N on F_y): the calibrated quantity is the force
   on the dynamometer [N]; the weights' uncertainty is inside the fit's covariance.
@@ -151,6 +153,22 @@ class Measurement:
     readings: dict[str, Quantity]
 
 
+def zero_drift_readings(inst: PointInstruments, gate_centre_s: float) -> dict[str, Quantity]:
+    """What the reduction needs for the dynamometer's zero drift since the calibration took the zero:
+    the amplifier gain [V/V], the input-referred random walk's variance rate D^2 [V^2/s] (0: drift
+    off) and the zero's age at the gate's centre [s], counted from the calibration's mid-time (its
+    offset is the zero of the whole stacking sequence)."""
+    amplifier = inst.dynamometer.amplifier
+    drift = amplifier.drift
+    rate = drift.diffusion**2 if isinstance(drift, RandomWalkDrift) else 0.0
+    age = inst.run_offset_s + gate_centre_s - 0.5 * calibration_duration_s()
+    return {
+        "dynamometer_gain": Quantity(float(amplifier.gain), "1"),
+        "dynamometer_drift_variance_rate": Quantity(float(rate), "V^2/s"),
+        "dynamometer_zero_age": Quantity(float(age), "s"),
+    }
+
+
 def measure(inst: PointInstruments, gate: GateData) -> Measurement:
     """Feed the gate's true signals (theta_1/2 [rad], F_y [N], brake moment [N m]) to the instruments."""
     t = np.asarray(gate.t_s, dtype=float)
@@ -174,5 +192,6 @@ def measure(inst: PointInstruments, gate: GateData) -> Measurement:
         "balance_noise_std": Quantity(bal.noise_std_N_m, "N m"),  # reading noise (0: effect off)
         "dynamometer_signal": Quantity(float(np.mean(dyn.volts)), "V"),
         "dynamometer_clipped": Quantity(float(dyn.n_clipped), "1"),
+        **zero_drift_readings(inst, t0 + 0.5 * duration),
     }
     return Measurement(channels, counters, readings)

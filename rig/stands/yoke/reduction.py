@@ -16,6 +16,10 @@ instrument, so that the simulated instrument and the reduction agree by construc
   larger of what the readings show and what the instrument alone gives, so a moment that moves
   within the gate is covered); the step is the stated reading of the paper's "accuracy 0.049 N"
   (stand parameter balance_step_N: 0.098 N = the +-limit reading by default, sensors.balance);
+* dynamometer 10's zero drift since the calibration: an input of value 0 and u = g sqrt(D^2 t) from
+  the gain g, the random walk's variance rate D^2 and the zero's age t the point records
+  (``dynamometer_gain``, ``dynamometer_drift_variance_rate``, ``dynamometer_zero_age``); a log
+  without them (older logs) reduces as before, and the table's ``attrs["notes"]`` says so;
 * F_N from the settings with the stand's ``normal_force_u_N``; b/a = StandAGeometry.b_over_a(F_N).
 The contact law is the one the stand simulated with (rig.stands.yoke.laws), so a mu recovered
 from a synthetic log tests the method, not a mismatch of models. Outside the law's domain the
@@ -25,6 +29,7 @@ that reason.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 
 import numpy as np
@@ -97,7 +102,26 @@ def point_readings(record: PointRecord, params: YokeParameters, geometry: StandA
         ),
         brake_moment=Measured(_quantity(record.readings, "T2", where), balance.u, balance.u_step),
         b_over_a=geometry.b_over_a(f_n),
+        zero_drift_u=zero_drift_u(record, where),
     )
+
+
+ZERO_DRIFT_READINGS = ("dynamometer_gain", "dynamometer_drift_variance_rate", "dynamometer_zero_age")
+NO_ZERO_DRIFT_NOTE = ("the log does not record dynamometer 10's zero drift (" + ", ".join(ZERO_DRIFT_READINGS)
+                      + "): u(F_y) holds no drift since the calibration, as before")
+
+
+def zero_drift_u(record: PointRecord, where: str) -> float:
+    """Standard uncertainty [V] of the dynamometer's zero at this point: the input-referred random
+    walk since the calibration took the zero, amplified, g sqrt(D^2 t) (sensors.noise.RandomWalkDrift,
+    Var W(t) = D^2 t); 0 for a log that does not record it (rig.stands.yoke.instruments.zero_drift_readings)."""
+    if not all(name in record.readings for name in ZERO_DRIFT_READINGS):
+        return 0.0
+    gain, rate, age = (_quantity(record.readings, name, where) for name in ZERO_DRIFT_READINGS)
+    if not (gain > 0.0 and rate >= 0.0 and age >= 0.0):
+        raise LogFormatError(f"{where}: dynamometer zero drift readings gain = {gain!r}, variance rate = {rate!r}, "
+                             f"zero age = {age!r} s; expected gain > 0, rate >= 0, age >= 0")
+    return gain * math.sqrt(rate * age)
 
 
 def reduce_log(path, params: YokeParameters, law_for: LawFor,
@@ -108,6 +132,7 @@ def reduce_log(path, params: YokeParameters, law_for: LawFor,
     missing dataset) is a row of NaN whose ``reason`` names the dataset and the bad value."""
     settings = ReductionSettings() if settings is None else settings
     indices, reduced, points, out_of_range, damaged = [], [], [], [], {}
+    drift_recorded = True
     for index, record in read_points(path):
         indices.append(index)
         where = f"point {index}"
@@ -116,6 +141,7 @@ def reduce_log(path, params: YokeParameters, law_for: LawFor,
                 raise record
             geometry = params.geometry_at(_quantity(record.settings, "delta_h", where))
             readings = point_readings(record, params, geometry, where)
+            drift_recorded &= all(name in record.readings for name in ZERO_DRIFT_READINGS)
         except LogFormatError as error:  # a damaged point: NaN with the reason, the others go on
             damaged[index] = str(error)
             continue
@@ -131,6 +157,8 @@ def reduce_log(path, params: YokeParameters, law_for: LawFor,
             frame.loc[index, "reason"] = "; ".join(r for r in (frame.loc[index, "reason"], why) if r)
     frame = with_damaged(frame, indices, damaged)
     frame.attrs["units"] = {column: UNITS.get(column_output(column), "1") for column in frame.columns}
+    if not drift_recorded:
+        frame.attrs["notes"] = [NO_ZERO_DRIFT_NOTE]
     return frame
 
 
