@@ -58,7 +58,7 @@ def main() -> int:
         base = [timed(rig + ["scenes"]) for _ in range(args.repeats)]
     med = {key: statistics.median(r[key] for r in warm) for key in ("wall", "cpu", "load")}
     base_wall = statistics.median(r["wall"] for r in base)
-    print(f"rig fit fig10 reduced.csv --params mu,psi (48 points, 2 free, nested sets mu / mu + psi, profiles)")
+    print("rig fit fig10 reduced.csv --params mu,psi (48 points, 2 free, nested sets mu / mu + psi, profiles)")
     print(f"  first run (fills the Psi-node table cache if cold): {first['wall']:.1f} s wall, {first['cpu']:.1f} s CPU")
     print(f"  warm: median {med['wall']:.1f} s wall, {med['cpu']:.1f} s CPU over {args.repeats} runs "
           f"(load average {med['load']:.1f})")

@@ -166,9 +166,8 @@ def dl_dratio(ratio, alpha_1: float, l1: float, l2: float):
     Stand A at l = 0: about -28.5 mm; used for the counting resolution of l.
     """
     s = math.sin(alpha_1)
-    if _scalar(ratio):
-        return -s * (l1 - l2) / (s + ratio) ** 2
-    return -s * (l1 - l2) / (s + np.asarray(ratio, dtype=float)) ** 2
+    d = s + (ratio if _scalar(ratio) else np.asarray(ratio, dtype=float))
+    return -s * (l1 - l2) / (d * d)  # d * d, not ** 2: Python's pow and numpy's square differ by an ulp
 
 
 def stand_b_offset(e: float, sigma):
