@@ -22,18 +22,22 @@ EXIT_INTERRUPTED = 130
 SUBCOMMANDS = ("run", "scenes", "reduce", "compare", "accuracy", "lab", "fit")
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(only: str | None = None) -> argparse.ArgumentParser:
+    """The parser with every subcommand, or with ``only`` that one (the others' imports - the lab's
+    web server, the fit engine - cost ~0.4 s that a ``rig run`` of a large study need not pay)."""
     parser = argparse.ArgumentParser(prog="rig", description="friction-rig: virtual friction-wheel test rig")
     parser.add_argument("--version", action="version", version=f"friction-rig {__version__}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
-    for name in SUBCOMMANDS:
+    for name in SUBCOMMANDS if only is None else (only,):
         importlib.import_module(f"rig.cli.{name}").add_parser(subparsers)
     return parser
 
 
 def main(argv: list[str] | None = None) -> int:
-    try:
-        parser = build_parser()  # imports the subcommands (numpy, scipy, ...): Ctrl-C may come here too
+    argv = sys.argv[1:] if argv is None else list(argv)
+    first = next((word for word in argv if not word.startswith("-")), None)
+    try:  # imports the subcommands (numpy, scipy, ...): Ctrl-C may come here too
+        parser = build_parser(first if first in SUBCOMMANDS else None)
     except KeyboardInterrupt:
         print("rig: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED

@@ -104,3 +104,13 @@ def test_python_m_rig_is_the_rig_command(scenes):
                           cwd=REPO, timeout=120)
     assert done.returncode == 0, done.stderr
     assert done.stdout.splitlines()[0].startswith("contact_characteristics  rigid pure spin")
+
+
+def test_a_subcommand_imports_only_itself_and_help_lists_them_all():
+    """rig run of a large study does not pay for the lab's web server or the fit engine (issue 12)."""
+    probe = ("import sys\nfrom rig.cli import build_parser\nbuild_parser('scenes')\n"
+             "print(sorted(m for m in ('rig.cli.lab', 'rig.cli.fit', 'rig.cli.run', 'flask') if m in sys.modules))")
+    loaded = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True).stdout
+    assert loaded.strip() == "[]"
+    helped = subprocess.run([sys.executable, "-m", "rig", "--help"], capture_output=True, text=True, check=True).stdout
+    assert all(name in helped for name in ("run", "scenes", "reduce", "compare", "accuracy", "lab", "fit"))
