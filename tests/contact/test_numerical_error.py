@@ -13,24 +13,33 @@ STATE = dict(alpha=20.5, c_over_a=0.0, l_over_a=0.0)  # pure spin, about half th
 FIXED = dict(shape="ellipse", b_over_a=1.0, poisson=0.28)
 
 
-def _nu(n):
-    r = solve("kinematic", n=n, **FIXED, **STATE)
-    return np.array([r.nu_T, r.nu_v, r.nu_0])
+@pytest.fixture(scope="module")
+def nu():
+    """n -> (nu_T, nu_v, nu_0) of the state on n cells, each grid solved once."""
+    values = {}
+
+    def at(n):
+        if n not in values:
+            r = solve("kinematic", n=n, **FIXED, **STATE)
+            values[n] = np.array([r.nu_T, r.nu_v, r.nu_0])
+        return values[n]
+
+    return at
 
 
-def test_estimate_at_n16_matches_the_error_against_the_n32_n64_extrapolation():
+def test_estimate_at_n16_matches_the_error_against_the_n32_n64_extrapolation(nu):
     """The estimate uses n = 16 and 32; the reference here uses 32 and 64 (second order, as
     tests/contact/test_convergence.py shows), so the two are independent beyond n = 32."""
-    estimate = converged_error(_nu(16), "kinematic", FIXED, 16, (0.0, 0.0, 20.5))
-    finer = _nu(64) + (_nu(64) - _nu(32)) / 3.0
-    actual = np.abs(_nu(16) - finer)
+    estimate = converged_error(nu(16), "kinematic", FIXED, 16, (0.0, 0.0, 20.5))
+    finer = nu(64) + (nu(64) - nu(32)) / 3.0
+    actual = np.abs(nu(16) - finer)
     assert actual[1] > 1e-3  # the case has a grid error worth estimating (nu_v about 0.004 at n = 16)
     assert estimate[1] == pytest.approx(actual[1], rel=0.35)
     assert estimate[2] <= max(2.0 * actual[2], 2e-3)
 
 
-def test_a_value_off_the_model_adds_its_offset_and_linear_theory_has_none():
-    base = converged_error(_nu(16), "kinematic", FIXED, 16, (0.0, 0.0, 20.5))
-    shifted = converged_error(_nu(16) + np.array([0.0, 0.01, 0.0]), "kinematic", FIXED, 16, (0.0, 0.0, 20.5))
+def test_a_value_off_the_model_adds_its_offset_and_linear_theory_has_none(nu):
+    base = converged_error(nu(16), "kinematic", FIXED, 16, (0.0, 0.0, 20.5))
+    shifted = converged_error(nu(16) + np.array([0.0, 0.01, 0.0]), "kinematic", FIXED, 16, (0.0, 0.0, 20.5))
     assert shifted[1] == pytest.approx(base[1] + 0.01, abs=1e-12) or shifted[1] == pytest.approx(0.01 - base[1], abs=1e-12)
     assert not np.any(converged_error(np.zeros(3), "linear", FIXED, 16, (0.0, 0.0, 20.5)))

@@ -47,6 +47,7 @@ NEWTON_TOL = 1e-7  # max |F| relative to the largest traction bound: nu to ~1e-8
 # a cell sticks where |q| stays below its bound by more than Newton's tolerance can blur
 STICK_MARGIN = 10 * NEWTON_TOL
 MAX_NEWTON = 50
+FULL_STICK_PRODUCTS = 5000  # GMRES products the linear full-stick solve may take
 MAX_MEMORY_PASSES = 50
 BACKWARD_2 = (1.5, -2.0, 0.5)  # dU/dx at a cell from it and two cells upstream, times h
 # grids with at least this many cells across 2a start Newton from the solution on half as many
@@ -168,8 +169,9 @@ def _transport(grid: Grid) -> tuple[np.ndarray, np.ndarray]:
 
 class _Preconditioner:
     """M^-1 = Kc^-1 o L^-1: L is the Jacobian with K replaced by K_self, which only couples a
-    cell to its upstream neighbours (solved exactly: a band LU in line order), and Kc^-1 the circulant inverse
-    of the influence operator restricted to the contact (Vollebregt's FFT preconditioner idea)."""
+    cell to its upstream neighbours (solved exactly: a band LU in line order), and Kc^-1 the
+    circulant inverse of the influence operator restricted to the contact (Vollebregt's FFT
+    preconditioner idea)."""
 
     def __init__(self, disc: Discretisation, rho, *, upwind: bool = True) -> None:
         """rho: Discretisation.slip_scale (N,) or a number; upwind: the steady law couples a cell
@@ -291,9 +293,11 @@ def solve_full_stick(grid: Grid, poisson: float, creepage: Creepage, effects: Co
     def operator(v):
         return disc.apply(v.reshape(2, n))[1].ravel()
 
-    t, _, converged = krylov_gmres(operator, -s_g.ravel(), preconditioner, rtol=rtol, restart=100, maxiter=5000)
+    t, _, converged = krylov_gmres(operator, -s_g.ravel(), preconditioner, rtol=rtol, restart=100,
+                                   maxiter=FULL_STICK_PRODUCTS)
     if not converged:
-        raise ConvergenceError(f"full-stick linear solve did not reach rtol {rtol:g} in 5000 GMRES iterations")
+        raise ConvergenceError(f"full-stick linear solve did not reach rtol {rtol:g} in {FULL_STICK_PRODUCTS} "
+                               "GMRES iterations")
     return t.reshape(2, n)
 
 
