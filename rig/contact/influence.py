@@ -20,6 +20,7 @@ from functools import lru_cache
 import numpy as np
 from scipy import fft
 
+from rig.contact import cellwise
 from rig.contact.grid import Grid
 
 
@@ -86,10 +87,9 @@ class InfluenceOperator:
 
     def _convolve(self, field: np.ndarray, symbol: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
         mx, my = self.grid_shape
-        fh = fft.rfft2(field, s=shape, workers=self.workers)
-        sxx, sxy, syy = symbol
-        out = np.stack([sxx * fh[0] + sxy * fh[1], sxy * fh[0] + syy * fh[1]])
-        return fft.irfft2(out, s=shape, workers=self.workers)[:, :mx, :my]
+        spectrum = fft.rfft2(field, s=shape, workers=self.workers)
+        cellwise.symbol_product(symbol, spectrum, spectrum)
+        return fft.irfft2(spectrum, s=shape, workers=self.workers)[:, :mx, :my]
 
     def apply(self, q: np.ndarray) -> np.ndarray:
         """Displacement u (2, nxg, ny) [mu p0 a/G] of tractions q (2, nxg, ny) [mu p0]."""

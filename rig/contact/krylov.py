@@ -2,18 +2,61 @@
 
 scipy's ``gmres`` spends more time in its own bookkeeping than in the products when the system
 has only a few thousand unknowns and converges in ~10 iterations (the contact solver's Newton
-steps): here the Arnoldi basis is one preallocated array, orthogonalised block-wise (classical
-Gram-Schmidt, applied twice, which is as stable as modified Gram-Schmidt [Giraud et al. 2005]),
-and the least-squares problem is updated with Givens rotations (Saad & Schultz 1986).
+steps). Here the Arnoldi basis is one preallocated array, orthogonalised by classical Gram-Schmidt
+applied twice (as stable as modified Gram-Schmidt [Giraud et al. 2005]) in a compiled loop, and the
+least-squares problem is updated with Givens rotations (Saad & Schultz 1986). The preconditioned
+basis vectors are kept (the flexible variant's storage, Saad 1993), so the solution costs no
+further preconditioner application. The vector loops are numba's, single-threaded on purpose:
+numpy's dot and matrix-vector products go to a threaded BLAS, whose threads cost more than they
+save on vectors of 10^3-10^5 entries, and on a machine busy with other processes (two cores, a study
+running beside) slowed a 128-cell solve six times (docs/contact-model.md, "Solver cost").
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
+import numba
 import numpy as np
 
 Operator = Callable[[np.ndarray], np.ndarray]
+
+
+@numba.njit(cache=True, nogil=True, fastmath=True)
+def _orthogonalise(basis, j, w, column):
+    """Classical Gram-Schmidt of w against basis[0..j], twice; adds the coefficients to column[0..j]
+    and returns |w| afterwards."""
+    n = w.size
+    for _ in range(2):
+        for i in range(j + 1):
+            h = 0.0
+            for k in range(n):
+                h += basis[i, k] * w[k]
+            column[i] += h
+            for k in range(n):
+                w[k] -= h * basis[i, k]
+    norm = 0.0
+    for k in range(n):
+        norm += w[k] * w[k]
+    return np.sqrt(norm)
+
+
+@numba.njit(cache=True, nogil=True, fastmath=True)
+def _combine(coefficients, vectors, out):
+    """out += sum_i coefficients[i] vectors[i]."""
+    for i in range(coefficients.size):
+        c = coefficients[i]
+        for k in range(out.size):
+            out[k] += c * vectors[i, k]
+
+
+@numba.njit(cache=True, nogil=True, fastmath=True)
+def norm(x):
+    """Euclidean norm of a 1-d array (single-threaded; module docstring)."""
+    total = 0.0
+    for k in range(x.size):
+        total += x[k] * x[k]
+    return np.sqrt(total)
 
 
 def gmres(matvec: Operator, b: np.ndarray, precondition: Operator, *, rtol: float, restart: int = 60,
@@ -25,13 +68,14 @@ def gmres(matvec: Operator, b: np.ndarray, precondition: Operator, *, rtol: floa
     (right preconditioning leaves it unscaled), as the Arnoldi relation gives it (no extra product)."""
     n = b.size
     x = np.zeros(n)
-    beta = float(np.linalg.norm(b))
+    beta = float(norm(b))
     target = rtol * beta
     if beta == 0.0:
         return x, 0, True
     residual = b
     products = 0
     basis = np.empty((restart + 1, n))
+    preconditioned = np.empty((restart, n))
     hessenberg = np.zeros((restart + 1, restart))
     cs, sn = np.zeros(restart), np.zeros(restart)
     while True:
@@ -40,14 +84,12 @@ def gmres(matvec: Operator, b: np.ndarray, precondition: Operator, *, rtol: floa
         g[0] = beta
         j = 0
         while j < restart and products < maxiter:
-            w = matvec(precondition(basis[j]))
+            preconditioned[j] = precondition(basis[j])
+            w = matvec(preconditioned[j])
             products += 1
-            for _ in range(2):  # classical Gram-Schmidt, twice
-                h = basis[: j + 1] @ w
-                w -= h @ basis[: j + 1]
-                hessenberg[: j + 1, j] += h
-            hessenberg[j + 1, j] = float(np.linalg.norm(w))
-            basis[j + 1] = w / hessenberg[j + 1, j] if hessenberg[j + 1, j] > 0.0 else 0.0
+            size = _orthogonalise(basis, j, w, hessenberg[:, j])
+            hessenberg[j + 1, j] = size
+            basis[j + 1] = w / size if size > 0.0 else 0.0
             for i in range(j):  # earlier rotations on the new column
                 hi, hk = hessenberg[i, j], hessenberg[i + 1, j]
                 hessenberg[i, j], hessenberg[i + 1, j] = cs[i] * hi + sn[i] * hk, -sn[i] * hi + cs[i] * hk
@@ -58,11 +100,12 @@ def gmres(matvec: Operator, b: np.ndarray, precondition: Operator, *, rtol: floa
             j += 1
             if abs(g[j]) <= target:
                 break
-        x += precondition(_back_substitute(hessenberg[:j, :j], g[:j]) @ basis[:j])
+        _combine(_back_substitute(hessenberg[:j, :j], g[:j]), preconditioned, x)
         beta = abs(float(g[j]))
         if beta <= target or products >= maxiter:
             return x, products, beta <= target
-        residual = _rotate_back(g[j], cs[:j], sn[:j]) @ basis[: j + 1]  # b - A x, from the Arnoldi relation
+        residual = np.zeros(n)  # b - A x, from the Arnoldi relation
+        _combine(_rotate_back(g[j], cs[:j], sn[:j]), basis, residual)
         hessenberg[:] = 0.0
 
 

@@ -36,7 +36,8 @@ DEFAULT_N = 32
 # 2: plastic slip of eq. (25) as a grid-independent slip velocity (docs/contact-model.md).
 # 3: FASTSIM's spin-moment flexibility L4 (fitted to C33).
 # 4: kinematic transport of second order with the edge-corrected row entry (rig.contact.models.kinematic).
-DISCRETISATION_REVISION = 4
+# 5: the kinematic solver's third pass (rig.contact.newton, elastic_law): Newton tolerance 1e-6, values move <= 1e-7.
+DISCRETISATION_REVISION = 5
 N_RANGE = (4, 512)
 # Effects each model can represent; the others would be silently meaningless, so they are errors.
 # The pressure-dependent mu changes only the traction bound, so every model with one has it; linear

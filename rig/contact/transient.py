@@ -28,6 +28,7 @@ displacements in mu p0 a/G, frictional work density in (mu p0)^2 a/G.
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -38,7 +39,9 @@ from rig.contact.grid import SHAPES, make_grid
 from rig.contact.influence import influence_operator
 from rig.contact.kalker import B_OVER_A_RANGE
 from rig.contact.kinematics import Creepage
-from rig.contact.models.kinematic import STICK_MARGIN, Discretisation, _newton, _Preconditioner
+from rig.contact import newton
+from rig.contact.elastic_law import ElasticLaw
+from rig.contact.newton import STICK_MARGIN
 from rig.contact.solve import DEFAULT_N, N_RANGE
 from rig.errors import ParameterError
 
@@ -165,11 +168,13 @@ class _Stepper:
 
     def __init__(self, grid, poisson, effects: ContactEffects, frictional_work: bool) -> None:
         self.grid = grid
-        self.op = influence_operator(grid, poisson)
-        self.disc = Discretisation(grid, self.op, effects)
+        op = influence_operator(grid, poisson)
+        # a step carries no transport: the slip displacement takes the displacement at the cell itself
+        self.law = ElasticLaw(grid, op, np.ones((1, grid.index.size)))
+        plastic = effects.plastic_slip
+        self.plastic_rate = 0.0 if plastic is None else plastic.rate(poisson)
         self.static = effects.static_friction
-        self.rho = 1.0 / self.op.self_term[0]
-        self.precond = _Preconditioner(self.disc, self.rho, upwind=False)
+        self.rho = 1.0 / op.self_term[0]
         self.x, self.y = grid.centres()
         self.p = grid.gather(grid.p)
         self.index = grid.index
@@ -178,7 +183,7 @@ class _Stepper:
 
     def carried(self, t: np.ndarray) -> np.ndarray:
         """The elastic displacement U on the full rectangle (2, cells) for tractions t at the cells."""
-        return self.disc.displacement(t)
+        return self.law.displacement(t).reshape(2, -1)
 
     def shifted(self, full: np.ndarray, d: float) -> np.ndarray:
         """full (..., cells) sampled at x - d for each active cell (linear interpolation, |d| <= hx)."""
@@ -205,12 +210,9 @@ class _Stepper:
             else:
                 r = self.static.bound(self.p, self.shifted(stuck, d) >= 0.5)
 
-            plastic = self.disc.plastic_rate * abs(d)  # eq. (25): plastic slip per distance rolled
-
-            def apply(v, plastic=plastic):
-                return v, self.carried(v)[:, self.index] + plastic * v
-
-            t, its, _ = _newton(apply, s0, self.precond, r, self.rho, t)
+            plastic = self.plastic_rate * abs(d)  # eq. (25): plastic slip per distance rolled
+            step_law = dataclasses.replace(self.law, plastic_rate=plastic)
+            t, its, _ = newton.solve(step_law, s0, r, self.rho, t)
             newton_total += its
             now = self.carried(t)
             sigma = s0 + now[:, self.index] + plastic * t

@@ -63,7 +63,6 @@ def test_rolling_resistance_moves_the_rolling_point_across_the_contact_line():
 @pytest.mark.parametrize(
     "target",
     [
-        (plastic_slip.PlasticSlip, "slip"),
         (plastic_slip.PlasticSlip, "rate"),
         (static_friction.StaticFriction, "bound"),
         (static_friction.StaticFriction, "upstream_state"),
@@ -80,8 +79,8 @@ def test_an_effect_left_off_is_never_called(target):
 
 
 def test_an_effect_turned_on_is_called():
-    with mock.patch.object(plastic_slip.PlasticSlip, "slip", autospec=True,
-                           side_effect=plastic_slip.PlasticSlip.slip) as spy:
+    with mock.patch.object(plastic_slip.PlasticSlip, "rate", autospec=True,
+                           side_effect=plastic_slip.PlasticSlip.rate) as spy:
         _solve(psi=2.0)
     assert spy.called
 

@@ -11,7 +11,7 @@ nu_v 0.5562 against 0.4937).
 import pytest
 
 from rig.contact.effects import ContactEffects
-from rig.contact.models.kinematic import NEWTON_TOL
+from rig.contact.newton import TOLERANCE as NEWTON_TOL
 from rig.contact.solve import solve
 from rig.errors import ParameterError
 

@@ -38,9 +38,6 @@ class PlasticSlip:
         validate.number("psi", self.psi, 1.0)
 
     def rate(self, poisson: float) -> float:
-        """(Psi - 1) v_el/(mu p v/G): plastic slip per unit traction [slip units per mu p0]."""
+        """(Psi - 1) v_el/(mu p v/G): plastic slip per unit traction [slip units per mu p0]; the
+        plastic slip of material under traction q is rate * q (rig.contact.elastic_law)."""
         return (self.psi - 1.0) * elastic_self_slip_rate(poisson)
-
-    def slip(self, q: np.ndarray, poisson: float) -> np.ndarray:
-        """Plastic slip (2, N) [mu p0 v/G] of material under traction q (2, N) [mu p0]."""
-        return self.rate(poisson) * q
