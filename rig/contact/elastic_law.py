@@ -50,6 +50,7 @@ from scipy import fft
 
 from rig.contact import cellwise
 from rig.contact.effects.surface_inertia import SurfaceInertia
+from rig.contact.entry import EntryProfile
 from rig.contact.grid import Grid
 from rig.contact.influence import InfluenceOperator
 
@@ -60,7 +61,8 @@ class ElasticLaw:
 
     transport (K, N): weight [1/a, or 1 for a rolling step] of the displacement at each cell (k = 0)
     and k cells upstream; plastic_rate g: plastic slip per unit traction [1]; inertia: surface
-    inertia (eq. 15) or None (off).
+    inertia (eq. 15) or None (off); entry: the first cells' traction profile at the leading edge
+    (the steady model's, rig.contact.entry) or None (uniform cells).
     """
 
     grid: Grid
@@ -68,6 +70,7 @@ class ElasticLaw:
     transport: np.ndarray
     plastic_rate: float = 0.0
     inertia: SurfaceInertia | None = None
+    entry: EntryProfile | None = None
 
     @cached_property
     def cells(self) -> tuple[np.ndarray, np.ndarray]:
@@ -84,8 +87,12 @@ class ElasticLaw:
         return position[self.grid.index[None, :] - steps * self.grid.ny]
 
     def displacement(self, t: np.ndarray) -> np.ndarray:
-        """U (2, nx, ny) [mu p0 a/G] on the grid rectangle of tractions t (2, N) [mu p0] at the cells."""
-        return self.op.apply(self.grid.scatter(t))
+        """U (2, nx, ny) [mu p0 a/G] on the grid rectangle of tractions t (2, N) [mu p0] at the cells
+        (the first cells' moment-matched share moved when there is an entry profile)."""
+        field = self.grid.scatter(t)
+        if self.entry is not None:
+            self.entry.spread(field, t)
+        return self.op.apply(field)
 
     def apply(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The linear part of the law at tractions t (2, N): (q, s - s0), both (2, N)."""
@@ -94,6 +101,8 @@ class ElasticLaw:
         slip = np.empty_like(t)
         ix, iy = self.cells
         cellwise.transported(u, ix, iy, self.transport, slip)
+        if self.entry is not None:
+            slip += self.entry.slip(t)
         if self.plastic_rate:
             slip += self.plastic_rate * q
         return q, slip
@@ -141,10 +150,16 @@ class Linearisation:
             dq, da = law.apply(v)
             return (dq - _symmetric_product(self.projection, dq - self.rho * da)).ravel()
         cellwise.place(v, ix, iy, self.field)
+        if law.entry is not None:
+            law.entry.spread(self.field, v)
         spectrum = fft.rfft2(self.field, s=op.pad_shape, workers=op.workers)
+        if law.entry is not None:
+            law.entry.clear(self.field)
         cellwise.symbol_product(op.kernels_hat, spectrum, spectrum)
         u = fft.irfft2(spectrum, s=op.pad_shape, workers=op.workers)
         cellwise.linearised_law(u, ix, iy, law.transport, v, self.local, self.slip_gain, self.out)
+        if law.entry is not None:
+            self.out += _symmetric_product(self.slip_gain, law.entry.slip(v))
         return self.out.ravel().copy()
 
     def precondition(self, v: np.ndarray) -> np.ndarray:

@@ -38,7 +38,8 @@ DEFAULT_N = 32
 # 4: kinematic transport of second order with the edge-corrected row entry (rig.contact.models.kinematic).
 # 5: the kinematic solver's third pass (rig.contact.newton, elastic_law): Newton tolerance 1e-6, values move <= 1e-7.
 # 6: a grid cell's pressure is the load of the contact nearest its centre (the rim's cut cells no longer drop theirs).
-DISCRETISATION_REVISION = 6
+# 7: each row's first cell carries its traction with the leading edge's sqrt profile, the second its own step (rig.contact.entry).
+DISCRETISATION_REVISION = 7
 N_RANGE = (4, 512)
 # Effects each model can represent; the others would be silently meaningless, so they are errors.
 # The pressure-dependent mu changes only the traction bound, so every model with one has it; linear

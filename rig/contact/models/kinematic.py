@@ -36,7 +36,8 @@ import numpy as np
 from rig.contact import newton
 from rig.contact.effects import ContactEffects
 from rig.contact.elastic_law import ElasticLaw
-from rig.contact.grid import Grid, leading_edge, make_grid
+from rig.contact.entry import entry_profile, transport_weights
+from rig.contact.grid import Grid, make_grid
 from rig.contact.influence import InfluenceOperator, influence_operator
 from rig.contact.kalker import creep_coefficients
 from rig.contact.kinematics import Creepage
@@ -47,7 +48,6 @@ from rig.errors import ConvergenceError
 
 MAX_MEMORY_PASSES = 50
 FULL_STICK_PRODUCTS = 5000  # GMRES products the linear full-stick solve may take
-BACKWARD_2 = (1.5, -2.0, 0.5)  # dU/dx at a cell from it and two cells upstream, times h
 # grids with at least this many cells across 2a start Newton from the solution on half as many
 # (nested iteration; coarser ones from FASTSIM)
 NESTED_START_N = 64
@@ -77,29 +77,26 @@ class Discretisation:
 
         s_c = s_g(x_c) + (3 U_c - 4 U_c-1 + U_c-2)/(2 h)            (second-order backward difference)
 
-    except in the first cell of each row, which the leading edge x_L cuts off from its upstream
-    neighbour (x_c-1 < x_L < x_c). There the mean slip S1 over the step [x_c-1, x_c] straddles the
-    edge: its part outside the contact is the free surface's slip, which grows like
-    sqrt(x_L - x) from the edge (the traction there is bounded by mu p ~ sqrt(distance)). The
-    step before, [x_c-2, x_c-1], lies wholly outside with mean slip S0, so the outside part of S1
-    is r S0, r = d^1.5/((d + h)^1.5 - d^1.5), d = x_L - x_c-1, and the slip of the material in
-    the contact is s_c = (S1 - r S0)/(1 - r). Every row's entry condition sets the traction level
-    of the whole row (in stick, the material carries it downstream), so it must be accurate: the
-    backward difference across the edge alone (which lets material stick outside the contact)
-    makes nu_v first order with a sign that depends on where the edge cuts each row [R, our
-    construction; docs/contact-model.md, "Convergence study"].
+    except in the first two cells of each row, next to the leading edge x_L; and the first cell's
+    traction is spread over [x_L, x_c + h/2] with the density sqrt(x - x_L) a traction has at a
+    leading edge, not uniformly over the cell (rig.contact.entry). Every row's entry sets the
+    traction level of the whole row (in stick, the material carries it downstream), so the model must
+    know where x_L lies inside the first cell: without that, nu moved at first order with the edge's
+    sub-cell position, erratically with n [R, our construction; docs/contact-model.md,
+    "Convergence study"].
     """
 
     def __init__(self, grid: Grid, op: InfluenceOperator, effects: ContactEffects) -> None:
         self.grid = grid
-        self.weights, self.x_slip = _transport(grid)
+        self.weights, self.x_slip = transport_weights(grid)
         plastic = effects.plastic_slip
         self.plastic_rate = 0.0 if plastic is None else plastic.rate(op.poisson)
-        self.law = ElasticLaw(grid, op, self.weights, self.plastic_rate, effects.surface_inertia)
+        self.law = ElasticLaw(grid, op, self.weights, self.plastic_rate, effects.surface_inertia,
+                              entry_profile(grid, op.poisson))
 
     def rigid_slip(self, creepage: Creepage) -> np.ndarray:
-        """s_g (2, N) [mu p0 v/G] where the transport takes it: the cell centre, or for the first
-        cell of a row the point its edge-corrected slip refers to (class docstring)."""
+        """s_g (2, N) [mu p0 v/G] where the transport takes it: the cell centre, or for the first two
+        cells of a row the point their slip refers to (rig.contact.entry.transport_weights)."""
         _, y = self.grid.centres()
         return creepage.field(self.x_slip, y)
 
@@ -110,26 +107,6 @@ class Discretisation:
         op = self.law.op
         k0, k1 = op.self_term[0], op.upstream_term[0]
         return SLIP_SCALE / (self.weights[0] * (k0 - k1) + self.plastic_rate)
-
-
-def _transport(grid: Grid) -> tuple[np.ndarray, np.ndarray]:
-    """Weights (3, N) [1/a] of U at each active cell and at the cells one and two steps upstream,
-    and the x [a] at which the rigid slip is taken (Discretisation's transport, class docstring)."""
-    x, y = grid.centres()
-    h = grid.hx
-    entering = ~grid.active.ravel()[grid.index - grid.ny]
-    weights = np.empty((3, x.size))
-    weights[:] = np.array(BACKWARD_2)[:, None] / h
-    x_slip = x.copy()
-    xe = x[entering]
-    d = np.clip(leading_edge(grid.shape, grid.b_over_a, y[entering]) - (xe - h), 0.0, h)
-    r = d**1.5 / ((d + h) ** 1.5 - d**1.5)  # outside share of the straddling step's slip over S0
-    inside = (1.0 - r) * h
-    weights[0, entering] = 1.0 / inside
-    weights[1, entering] = -(1.0 + r) / inside
-    weights[2, entering] = r / inside
-    x_slip[entering] = ((xe - 0.5 * h) - r * (xe - 1.5 * h)) / (1.0 - r)
-    return weights, x_slip
 
 
 def solve_grid(grid: Grid, poisson: float, creepage: Creepage, effects: ContactEffects) -> GridSolution:
