@@ -117,9 +117,9 @@ def entry_profile(grid: Grid, poisson: float) -> EntryProfile:
     cells = np.flatnonzero(entering(grid))
     x_l = leading_edge(grid.shape, grid.b_over_a, y[cells])
     nxg, ny = grid.full_shape
-    reach = WINDOW * hx  # the correction is a quadrupole of the profile's size, ~hx
-    wi, wj = int(np.ceil(reach / hx)), int(np.ceil(reach / hy))
-    di, dj = (a.ravel() for a in np.meshgrid(np.arange(-wi, wi + 1), np.arange(-wj, wj + 1), indexing="ij"))
+    rows_reached = int(np.ceil(WINDOW * hx / hy))  # the correction is a quadrupole of the profile's size, ~hx
+    di, dj = (a.ravel() for a in np.meshgrid(np.arange(-WINDOW, WINDOW + 1), np.arange(-rows_reached, rows_reached + 1),
+                                             indexing="ij"))
     column, row = np.divmod(grid.index[cells], ny)
     # strips of the profile's support [x_L, x_e + h/2] relative to the cell centre, their force shares
     lo = (x_l - x[cells])[:, None]

@@ -137,33 +137,26 @@ def _cell_pressure(shape, b, x, y, hx, hy, active) -> np.ndarray:
     whole load (dropping it, as a centre rule alone does, loses 0.1-0.6 % of F_N at the rim,
     O(h^1.5) and of either sign with n). Interior cells average 8 x 8 sub-points, cells the rim
     cuts 32 x 32 (the sqrt edge converges slowly)."""
-    p = np.where(active, _sub_points(shape, b, x, y, hx, hy, _SUBSAMPLES)[2].mean(axis=(2, 3)), 0.0)
-    corners = [pressure(shape, b, x[:, None] + sx * hx / 2, y[None, :] + sy * hy / 2) > _INSIDE
-               for sx in (-1, 1) for sy in (-1, 1)]
-    rim = ~np.logical_and.reduce(corners) & np.logical_or.reduce(corners + [active])
-    i, j = np.nonzero(rim)
-    xs, ys, ps = _sub_points(shape, b, x[i], y[j], hx, hy, _RIM_SUBSAMPLES, pairs=True)
-    centres = np.column_stack([c[active] for c in np.meshgrid(x, y, indexing="ij")])
+    mean = _sub_points(shape, b, x[:, None], y[None, :], hx, hy, _SUBSAMPLES)[2].mean(axis=(2, 3))
+    interior = np.logical_and.reduce([pressure(shape, b, x[:, None] + sx * hx / 2, y[None, :] + sy * hy / 2) > _INSIDE
+                                      for sx in (-1, 1) for sy in (-1, 1)])
+    p = np.where(interior, mean, 0.0)
+    i, j = np.nonzero(~interior & ((mean > 0.0) | active))
+    xs, ys, ps = _sub_points(shape, b, x[i], y[j], hx, hy, _RIM_SUBSAMPLES)
     loaded = ps > 0.0
+    centres = np.column_stack([c[active] for c in np.meshgrid(x, y, indexing="ij")])
     # the two nearest centres; a sub-point as near to both (the lattice makes ties) goes half to each,
     # which keeps the loads as symmetric as the contact (negative spin is solved as the mirror image)
     distance, nearest = spatial.cKDTree(centres).query(np.column_stack([xs[loaded], ys[loaded]]), k=2)
     half = 0.5 * (distance[:, 1] - distance[:, 0] <= 1e-9 * (hx + hy))
     weights = ps[loaded] / _RIM_SUBSAMPLES**2
-    p[active] = np.where(np.logical_and.reduce(corners)[active], p[active], 0.0)
     for k, share in ((0, 1.0 - half), (1, half)):
         p[active] += np.bincount(nearest[:, k], weights=weights * share, minlength=centres.shape[0])
     return p
 
 
-def _sub_points(shape, b, x, y, hx, hy, m, pairs=False):
-    """(x, y, p/p0) at m x m sub-points of the cells with centres x, y: of the grid x by y
-    (arrays (nx, ny, m, m)), or of the cells (x[k], y[k]) when pairs (arrays (K, m, m))."""
+def _sub_points(shape, b, x, y, hx, hy, m):
+    """(x, y, p/p0) at m x m sub-points of the cells centred at (x, y) (broadcast; arrays (..., m, m))."""
     s = (np.arange(m) + 0.5) / m - 0.5
-    if pairs:
-        xs = x[:, None, None] + hx * s[None, :, None] + 0.0 * s[None, None, :]
-        ys = y[:, None, None] + 0.0 * s[None, :, None] + hy * s[None, None, :]
-    else:
-        xs, ys = np.broadcast_arrays(x[:, None, None, None] + hx * s[None, None, :, None],
-                                     y[None, :, None, None] + hy * s[None, None, None, :])
+    xs, ys = np.broadcast_arrays(x[..., None, None] + hx * s[:, None], y[..., None, None] + hy * s[None, :])
     return xs, ys, pressure(shape, b, xs, ys)
