@@ -106,17 +106,21 @@ def test_negative_spin_matches_solve_creepage(c, l, v, w):
 def test_kinematic_law_tends_to_rigid_sliding_as_v_goes_to_zero_for_every_sign(kinematic_table, sv, sw):
     """v -> 0 is alpha' -> 0 (hard case 3): the limit is finite and equals sign(w0) times the
     model's own alpha' = 0 result at (c, l), from either direction of rolling. This checks the
-    mirror in x (v < 0) on the elastic model, which has no solver for material flowing in -x."""
+    mirror in x (v < 0) on the elastic model, which has no solver for material flowing in -x.
+    At n = 16: the first two cells of a row take the rigid slip upstream of their centres
+    (rig.contact.entry), which the alpha' = 0 result on the cell centres does not; the gap is
+    O(h^2), 0.0007 (v > 0) and 0.0015 (v < 0) at n = 16 here, 0.004 and 0.011 at n = 8."""
     c, l, w = 0.25 * A, -0.6 * A, 40.0
-    truth = sw * _canonical("kinematic", c, l, alpha=0.0)
+    truth = sw * _canonical("kinematic", c, l, alpha=0.0, n=16)
     scale = np.array([MU_F, MU_F, MU_F * A, MU_F * A])
-    near = contact_forces(_law("kinematic", False), PATCH, speed=sv * 1e-3, spin=sw * w, c=c, l=l)
+    near = contact_forces(_law("kinematic", False, n=16), PATCH, speed=sv * 1e-3, spin=sw * w, c=c, l=l)
     assert near.alpha_prime < 1e-3
     np.testing.assert_allclose(_forces(near) / scale, truth / scale, atol=3e-3)  # docs: alpha' -> 0 within 2e-3
     # the table at v = 0 exactly (its alpha' = 0 slice) and just off it, both sides: same finite limit
     at_zero = _forces(contact_forces(kinematic_table, PATCH, speed=0.0, spin=sw * w, c=c, l=l))
     off = _forces(contact_forces(kinematic_table, PATCH, speed=sv * 1e-12, spin=sw * w, c=c, l=l))
     np.testing.assert_allclose(off, at_zero, rtol=1e-9, atol=1e-12)
+    truth = sw * _canonical("kinematic", c, l, alpha=0.0)  # the table's grid, n = 8
     np.testing.assert_allclose(at_zero / scale, truth / scale, atol=2e-2)  # between nodes of a 7 x 7 slice
     node_l = float(kinematic_table.table.inputs.axes()[0][2]) * A  # a node: exact
     at_node = contact_forces(kinematic_table, PATCH, speed=0.0, spin=sw * w, c=0.0, l=node_l)
