@@ -120,3 +120,35 @@ def linearised_law(u, ix, iy, transport, t, local, slip_gain, out):
             s1 += transport[k, c] * u[1, i - k, j]
         out[0, c] = local[0, c] * t[0, c] + local[1, c] * t[1, c] + slip_gain[0, c] * s0 + slip_gain[1, c] * s1
         out[1, c] = local[1, c] * t[0, c] + local[2, c] * t[1, c] + slip_gain[1, c] * s0 + slip_gain[2, c] * s1
+
+
+@_compiled
+def spread_entry(field, t, cells, full, neighbour, neighbour_active, share):
+    """Move share[e] of the traction t (2, N) of each first cell cells[e] from its place full[e] in the
+    flat grid field (2, nx ny) to neighbour[e] (added there, or set where the neighbour is outside
+    the contact); rig.contact.entry.EntryProfile.spread."""
+    for e in range(cells.size):
+        for m in range(2):
+            moved = share[e] * t[m, cells[e]]
+            field[m, full[e]] -= moved
+            if neighbour_active[e]:
+                field[m, neighbour[e]] += moved
+            else:
+                field[m, neighbour[e]] = moved
+
+
+@_compiled
+def add_local_slip(indptr, indices, data, t, slip_gain, out):
+    """out_c += B_c (C t)_c: C a sparse (2N, 2N) CSR matrix (indptr, indices, data) on t.ravel() of
+    t (2, N), B_c the symmetric (3, N) slip_gain; out (2, N)."""
+    n = t.shape[1]
+    flat = t.ravel()
+    for c in range(n):
+        c0 = 0.0
+        for k in range(indptr[c], indptr[c + 1]):
+            c0 += data[k] * flat[indices[k]]
+        c1 = 0.0
+        for k in range(indptr[n + c], indptr[n + c + 1]):
+            c1 += data[k] * flat[indices[k]]
+        out[0, c] += slip_gain[0, c] * c0 + slip_gain[1, c] * c1
+        out[1, c] += slip_gain[1, c] * c0 + slip_gain[2, c] * c1

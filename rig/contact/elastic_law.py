@@ -159,7 +159,8 @@ class Linearisation:
         u = fft.irfft2(spectrum, s=op.pad_shape, workers=op.workers)
         cellwise.linearised_law(u, ix, iy, law.transport, v, self.local, self.slip_gain, self.out)
         if law.entry is not None:
-            self.out += _symmetric_product(self.slip_gain, law.entry.slip(v))
+            local = law.entry.local
+            cellwise.add_local_slip(local.indptr, local.indices, local.data, v, self.slip_gain, self.out)
         return self.out.ravel().copy()
 
     def precondition(self, v: np.ndarray) -> np.ndarray:

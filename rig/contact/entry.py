@@ -31,6 +31,7 @@ from functools import lru_cache
 import numpy as np
 import scipy.sparse as sparse
 
+from rig.contact import cellwise
 from rig.contact.grid import Grid, leading_edge
 from rig.contact.influence import cell_kernels
 
@@ -80,8 +81,9 @@ class EntryProfile:
     cells: (E,) indices of the first cells among the active cells; full, neighbour: (E,) flat
     indices (grid rectangle) of each first cell and of the cell next to it in its row that takes
     the moment-matching share ``share`` (E,) [1] of its force; neighbour_active: (E,) whether that
-    cell is in the contact; local: (xx, xy, yy) sparse (N, N) [1/a]: the elastic slip of the local
-    correction per unit traction of each first cell (the transport applied to its displacement).
+    cell is in the contact; local: sparse (2N, 2N) [1/a]: the elastic slip of the local correction
+    per unit traction of each first cell (the transport applied to its displacement), acting on
+    t.ravel() of tractions t (2, N).
     """
 
     cells: np.ndarray
@@ -89,15 +91,14 @@ class EntryProfile:
     neighbour: np.ndarray
     neighbour_active: np.ndarray
     share: np.ndarray
-    local: tuple[sparse.csr_matrix, sparse.csr_matrix, sparse.csr_matrix]
+    local: sparse.csr_matrix
 
     def spread(self, field: np.ndarray, t: np.ndarray) -> None:
         """Move each first cell's moment-matching share of t (2, N) [mu p0] to its neighbour in the
-        traction field (2, nx, ny) on the grid rectangle (in place) that has t at the active cells."""
-        flat = field.reshape(2, -1)
-        moved = self.share * t[:, self.cells]
-        flat[:, self.full] -= moved
-        flat[:, self.neighbour] = np.where(self.neighbour_active, flat[:, self.neighbour], 0.0) + moved
+        traction field (2, nx, ny) on the grid rectangle (in place) that has t at the active cells;
+        a neighbour outside the contact gets the share alone (whatever the field held there)."""
+        cellwise.spread_entry(field.reshape(2, -1), t, self.cells, self.full, self.neighbour,
+                              self.neighbour_active, self.share)
 
     def clear(self, field: np.ndarray) -> None:
         """Zero the shares :meth:`spread` put outside the contact (for fields reused between products)."""
@@ -105,8 +106,7 @@ class EntryProfile:
 
     def slip(self, t: np.ndarray) -> np.ndarray:
         """(2, N) [mu p0 v/G]: the local correction's elastic slip for tractions t (2, N)."""
-        xx, xy, yy = self.local
-        return np.stack([xx @ t[0] + xy @ t[1], xy @ t[0] + yy @ t[1]])
+        return (self.local @ t.ravel()).reshape(t.shape)
 
 
 @lru_cache(maxsize=64)
@@ -152,7 +152,8 @@ def entry_profile(grid: Grid, poisson: float) -> EntryProfile:
         (weights.ravel(), (np.tile(np.arange(index.size), 3), np.concatenate([index - k * ny for k in range(3)]))),
         shape=(index.size, grid.p.size),
     )
-    slips = tuple((transport @ sparse.csr_matrix((part[ok], (rows, columns)), shape=shape)).tocsr() for part in local)
+    xx, xy, yy = ((transport @ sparse.csr_matrix((part[ok], (rows, columns)), shape=shape)) for part in local)
+    slips = sparse.bmat([[xx, xy], [xy, yy]], format="csr")
     full = index[cells]
     neighbour = full + side * ny
     return EntryProfile(cells, full, neighbour, grid.active.ravel()[neighbour], share, slips)
