@@ -3,10 +3,15 @@
 A stand's law samples a grid model on n cells across 2a, usually through a surrogate table
 (rig.contact.surrogate) that also interpolates between its nodes, so a looked-up nu carries the
 grid's discretisation error and the table's interpolation error. At a state (l/a, c/a, alpha')
-the model is solved directly on n and 2n cells and extrapolated to zero cell size at second
-order, the order the kinematic solver shows (docs/contact-model.md, "Convergence study"):
+the model is solved directly on n and 2n cells and extrapolated to zero cell size at first order:
 
-    nu* = nu_2n + (nu_2n - nu_n) / 3,          error = |law - nu*|          (per coefficient)
+    nu* = nu_2n + (nu_2n - nu_n) = 2 nu_2n - nu_n,          error = |law - nu*|          (per coefficient)
+
+The kinematic solver converges monotonically at an order between 1 and 2 (nu_0 and most partial-
+slip states about 2; nu_v of the circle and of narrow ellipses about 1.4, where the stick/slip
+boundary and the spin pole dominate: docs/contact-model.md, "Convergence study"). For any order
+p >= 1 the error of nu_n is at most 2 |nu_n - nu_2n|, which this bound is; the second-order
+extrapolation (nu_2n - nu_n)/3 used until 2026-11 underestimated nu_v's error by up to 1.8x.
 
 The reduction carries this error as a rectangular component of its uncertainty budget at every
 reduced point when the scene asks for it ([contact] error_budget; rig.reduction.coefficients),
@@ -32,7 +37,7 @@ def converged_error(law_values: np.ndarray, model: str, fixed: dict, n: int, sta
     l, c, a = state
     coarse, fine = (np.array(_coefficients(solve(model, alpha=a, c_over_a=c, l_over_a=l, n=m, **fixed)))
                     for m in (n, min(2 * n, N_RANGE[1])))
-    return np.abs(np.asarray(law_values, dtype=float) - (fine + (fine - coarse) / 3.0))
+    return np.abs(np.asarray(law_values, dtype=float) - (2.0 * fine - coarse))
 
 
 def _coefficients(result) -> tuple[float, float, float]:

@@ -27,13 +27,15 @@ def nu():
     return at
 
 
-def test_estimate_at_n16_matches_the_error_against_the_n32_n64_extrapolation(nu):
-    """The estimate uses n = 16 and 32; the reference here uses 32 and 64 (second order, as
-    tests/contact/test_convergence.py shows), so the two are independent beyond n = 32."""
+def test_estimate_at_n16_matches_the_error_against_the_n64_n128_extrapolation(nu):
+    """The estimate uses n = 16 and 32; the reference here extrapolates n = 64 and 128 the same way
+    (first order, the slower of the orders the solver shows; tests/contact/test_convergence.py), so
+    the two share no grid. Measured: nu_v 0.45394/0.45316 at n = 16/32, 0.45256/0.45232 at 64/128,
+    0.45222 at 256; estimate 0.00156, reference 0.00186 (with n = 256's value as the limit, 0.0017)."""
     estimate = converged_error(nu(16), "kinematic", FIXED, 16, (0.0, 0.0, 20.5))
-    finer = nu(64) + (nu(64) - nu(32)) / 3.0
+    finer = 2.0 * nu(128) - nu(64)
     actual = np.abs(nu(16) - finer)
-    assert actual[1] > 1e-3  # the case has a grid error worth estimating (nu_v about 0.004 at n = 16)
+    assert actual[1] > 1e-3  # the case has a grid error worth estimating (nu_v about 0.0018 at n = 16)
     assert estimate[1] == pytest.approx(actual[1], rel=0.35)
     assert estimate[2] <= max(2.0 * actual[2], 2e-3)
 
