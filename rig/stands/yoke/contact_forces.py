@@ -4,8 +4,8 @@ From the wheel speeds (w1, w2) [rad/s] to what the drive train needs (vectorised
 
     w01 = w1 sin(alpha1), w02 = w2, w0 = w01 + w02                   eq. (1), opposite-side axes
     w0 C = w01 A1 + w02 A2 = (w02 Delta h, w01 l1 + w02 l2) =: P      eqs. (29)-(31), centroid form
-    (rig.wheel_kinematics, the reduction's functions: rolling_point on the scalar path,
-    centroid_moments - the same centroid's numerator, finite at w0 = 0 - on the vectorised one)
+    (rig.wheel_kinematics, the reduction's function centroid_moments: the centroid's numerator,
+    finite at w0 = 0)
     alpha' = 10 mu (b/a)(v/w0)/R_x,  v = w1 r1                        eq. (21), line contact
     (nu_T, nu_v, nu_0) = law(l/a, c/a, alpha')                        the scene's contact law
     F_x = mu F_N nu_T, F_y = mu F_N nu_v, M_C = -mu a F_N nu_0        eqs. (26)-(28), w0 > 0
@@ -47,7 +47,7 @@ from rig import validate
 from rig.contact.surrogate import TableDomain
 from rig.reduction.equations import alpha_prime_line_contact
 from rig.reduction.geometry import StandAGeometry
-from rig.wheel_kinematics import centroid_moments, rolling_point
+from rig.wheel_kinematics import centroid_moments
 
 Law = Callable[[np.ndarray, np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
 """law(l_over_a, c_over_a, alpha) -> (nu_T, nu_v, nu_0), vectorised (rig.stands.contact_law)."""
@@ -98,9 +98,7 @@ class StandAContact:
         g = geometry
         self._sin_a1 = math.sin(g.alpha_1)
         self._alpha_per_v_over_w0 = alpha_prime_line_contact(mu, b_over_a, 1.0, g.radius_x)  # [1/m]
-        a = g.a
         self._shift = float(getattr(law, "rolling_length", 0.0))  # f/a of the rolling-resistance effect [1]
-        self._pierce_1, self._pierce_2 = (0.0, g.l1 / a), (g.delta_h / a, g.l2 / a)  # A1, A2 [a] (seed notes 1.2)
 
     def moments(self, omega_1, omega_2) -> tuple[np.ndarray, np.ndarray]:
         """(T1, T2) [N m]: contact moments on wheels 1 and 2 in their senses of rotation (arrays)."""
@@ -108,25 +106,35 @@ class StandAContact:
         return s.T1, s.T2
 
     def moments_scalar(self, omega_1: float, omega_2: float) -> tuple[float, float]:
-        """(T1, T2) [N m] for scalar speeds [rad/s]: the same numbers as :meth:`moments`, with a
-        fast path (plain floats) when the rolling point lies inside the domain (the ODE's RHS)."""
+        """(T1, T2) [N m] for scalar speeds [rad/s]: the very numbers of :meth:`moments` (the same
+        operations in the same order, numpy's tanh and hypot), computed on plain floats when w0 > 0
+        (the ODE's right-hand side, the steady state's root search); other speeds through moments."""
         g = self.geometry
+        a = g.a
         w01 = omega_1 * self._sin_a1
         w0 = w01 + omega_2
-        if w0 > 1e-6 * (abs(w01) + abs(omega_2)):
-            c_a, l_a = rolling_point(w01, omega_2, self._pierce_1, self._pierce_2)  # eqs. (29)-(31), units of a
-            d = self.domain
-            if d.l_over_a[0] <= l_a <= d.l_over_a[1] and d.c_over_a[0] <= c_a <= d.c_over_a[1]:
-                a = g.a
-                alpha = min(max(self._alpha_per_v_over_w0 * abs(omega_1) * g.r1 / w0, d.alpha[0]), d.alpha[1])
-                nu_t, nu_v, nu_0 = self.law(l_a, c_a, alpha)
-                force = self.mu * self.normal_force * math.tanh(w0 * a * math.sqrt(l_a * l_a + c_a * c_a + 1.0)
-                                                                 / self.slip_speed_eps)
-                f_x, f_y = force * float(nu_t), force * float(nu_v)
-                m_o = force * a * (-float(nu_0) + (c_a + self._shift) * float(nu_v) - l_a * float(nu_t))
-                return self._sin_a1 * (m_o + g.l1 * f_x), m_o - g.delta_h * f_y + g.l2 * f_x
-        t1, t2 = self.moments(omega_1, omega_2)
-        return float(t1), float(t2)
+        if not w0 > TINY:
+            t1, t2 = self.moments(omega_1, omega_2)
+            return float(t1), float(t2)
+        d = self.domain
+        p_c, p_l = centroid_moments(w01, omega_2, (0.0, g.l1), (g.delta_h, g.l2))  # w0 (c, l), eqs. (29)-(31)
+        l_c, c_c = (min(max(p / (w0 * a), -1e300), 1e300) for p in (p_l, p_c))  # rolling point [a]
+        l_b, c_b = min(max(l_c, d.l_over_a[0]), d.l_over_a[1]), min(max(c_c, d.c_over_a[0]), d.c_over_a[1])
+        alpha = min(max(self._alpha_per_v_over_w0 * abs(omega_1) * g.r1 / w0, d.alpha[0]), d.alpha[1])
+        nu_t, nu_v, nu_0 = (float(x) for x in self.law(l_b, c_b, alpha))
+        nu_mo = -nu_0 + (c_b + self._shift) * nu_v - l_b * nu_t
+        slip = math.sqrt(p_l * p_l + p_c * p_c + (w0 * a) ** 2)
+        if l_b != l_c or c_b != c_c:  # outside the domain: continued to the far field, as in evaluate
+            p_abs, rho_b = max(float(np.hypot(p_l, p_c)), TINY), float(np.hypot(l_b, c_b))
+            far_t_b, far_v_b = -l_b / max(rho_b, TINY), c_b / max(rho_b, TINY)
+            lam = w0 * a * math.sqrt(rho_b**2 + 1.0) / max(slip, TINY)
+            nu_t = -p_l / p_abs + lam * (nu_t - far_t_b)
+            nu_v = p_c / p_abs + lam * (nu_v - far_v_b)
+            nu_mo = lam * nu_mo
+        force = self.mu * self.normal_force * float(np.tanh(slip / self.slip_speed_eps))
+        f_x, f_y = force * nu_t, force * nu_v
+        m_o = force * a * nu_mo
+        return self._sin_a1 * (m_o + g.l1 * f_x), m_o - g.delta_h * f_y + g.l2 * f_x
 
     def moments_jacobian(self, omega_1: float, omega_2: float) -> np.ndarray:
         """d(T1, T2)/d(w1, w2) [N m s/rad], (2, 2), by forward differences of :meth:`moments_scalar`

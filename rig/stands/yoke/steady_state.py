@@ -71,7 +71,7 @@ def steady_state(contact: StandAContact, omega_1: float, brake_moment: float, *,
 
     def residual(l: float) -> float:
         w2 = omega_2(l)
-        t2 = float(contact.moments(w1, w2)[1])
+        t2 = contact.moments_scalar(w1, w2)[1]
         return t2 - t_set * math.tanh(w2 / brake_speed_eps) - _friction(bearing, w1, w2)[1]
 
     lo, hi = g.l2 + EDGE * span, g.l1 - EDGE * span
@@ -89,12 +89,12 @@ def steady_state(contact: StandAContact, omega_1: float, brake_moment: float, *,
     l = brentq(residual, lo, hi, xtol=1e-12, rtol=1e-15, maxiter=200)
     w2 = omega_2(l)
     if w2 < STALL_RATIO * brake_speed_eps:
-        stall = float(contact.moments(w1, STALL_RATIO * brake_speed_eps)[1])
+        stall = contact.moments_scalar(w1, STALL_RATIO * brake_speed_eps)[1]
         raise ParameterError("brake_setpoint_N_m", brake_moment,
                              f"below {stall:.4g} N m: at F_N = {contact.normal_force:g} N the brake would hold "
                              "wheel 2 (stall, hard case 2)")
     f1, f2 = _friction(bearing, w1, w2)
     brake = t_set * math.tanh(w2 / brake_speed_eps)
     h = 1e-6 * w2
-    drive = [float(contact.moments(w1, x)[1]) - _friction(bearing, w1, x)[1] for x in (w2 - h, w2 + h)]
+    drive = [contact.moments_scalar(w1, x)[1] - _friction(bearing, w1, x)[1] for x in (w2 - h, w2 + h)]
     return OperatingPoint(w1, w2, contact.evaluate(w1, w2), brake, f1, f2, (drive[1] - drive[0]) / (2.0 * h))
