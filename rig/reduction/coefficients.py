@@ -42,7 +42,8 @@ def with_model_error(inputs: InputSet, bound) -> InputSet:
 def corrected(nu: tuple[float, float, float], values) -> tuple[float, float, float]:
     """The coefficients plus the model-error inputs' values (0 at the point, perturbed in the
     propagation); inputs that are not there count as 0."""
-    return tuple(x + values.get(name, 0.0) for x, name in zip(nu, NU_ERRORS))
+    get = values.get
+    return nu[0] + get(NU_ERRORS[0], 0.0), nu[1] + get(NU_ERRORS[1], 0.0), nu[2] + get(NU_ERRORS[2], 0.0)
 
 
 class OutsideModelDomain(ParameterError):
@@ -53,10 +54,11 @@ def call_model(coefficients: Coefficients, l_over_a: float, c_over_a: float,
                alpha: float) -> tuple[tuple[float, float, float] | None, str]:
     """((nu_T, nu_v, nu_0), "") or (None, reason) when the model has no finite answer there."""
     try:
-        nu = tuple(float(x) for x in coefficients(l_over_a, c_over_a, alpha))
+        nu_t, nu_v, nu_0 = coefficients(l_over_a, c_over_a, alpha)
     except OutsideModelDomain as error:
         return None, f"contact model: {error}"
-    if not all(math.isfinite(x) for x in nu):
+    nu = (float(nu_t), float(nu_v), float(nu_0))
+    if not (math.isfinite(nu[0]) and math.isfinite(nu[1]) and math.isfinite(nu[2])):
         return None, (f"contact model gave no coefficients at l/a = {l_over_a:.6g}, c/a = {c_over_a:.6g}, "
                       f"alpha' = {alpha:.6g} (nu_T, nu_v, nu_0 = {', '.join(f'{x:.3g}' for x in nu)})")
     return nu, ""

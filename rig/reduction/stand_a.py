@@ -45,6 +45,7 @@ OUTPUTS = (
 )
 DRIVERS = ("mu_v", "mu_T")  # which estimate feeds alpha', in order of preference (seed notes 2)
 DRIVEN = ("alpha_prime", "nu_T", "nu_v", "nu_0", "D_m", "mu_v", "mu_T")  # computed from the driving mu
+KINEMATIC = tuple(name for name in OUTPUTS if name != "F_y_N")  # the outputs the counts' kinematics feed
 GUARDS = (Guard("mu_v", "nu_v"), Guard("mu_T", "D_m"))
 COUNT_U = float(COUNT_QUANTISATION_STD)
 """u of a gated count [count]: 1/sqrt(6), the difference of two uniform mark phases at the gate
@@ -167,7 +168,6 @@ def evaluate(
     g = with_inputs(geometry, values)
     out = dict.fromkeys(OUTPUTS, math.nan)
     out["F_y_N"] = f_y = _lateral_force(values, g)
-    kinematic = tuple(name for name in OUTPUTS if name != "F_y_N")
     n1, n2 = values["N1"], values["N2"]
     if min(n1, n2) < settings.min_counts:
         counts = f"counts N1 = {n1:g}, N2 = {n2:g} below min_counts = {settings.min_counts}"
@@ -175,12 +175,12 @@ def evaluate(
             why = f"{counts}: the gate of {readings.gate_time.value:g} s is too short for wheel 1's marks"
         else:
             why = f"{counts}: wheel 2 stalled (hard case 2)"
-        return Evaluation(out, dict.fromkeys(kinematic, why), math.nan, 0)
+        return Evaluation(out, dict.fromkeys(KINEMATIC, why), math.nan, 0)
     omega_1 = eq.angular_speed_from_counts(n1, readings.marks_1, reading_value(values, "T_gate", "s"))
     try:
         i_k, c, l = _kinematics(n1, n2, readings.marks_1, readings.marks_2, g.alpha_1, g.l1, g.l2, g.delta_h)
     except SpinTooSmallError as error:
-        return Evaluation(out, dict.fromkeys(kinematic, str(error)), math.nan, 0)
+        return Evaluation(out, dict.fromkeys(KINEMATIC, str(error)), math.nan, 0)
     sin_a1 = math.sin(g.alpha_1)
     f_n, t2 = reading_value(values, "F_N", "N"), reading_value(values, "T2", "N_m")
     alpha_per_mu = eq.alpha_prime_line_contact(1.0, readings.b_over_a, g.r1 / (sin_a1 + i_k), g.radius_x)

@@ -14,6 +14,7 @@ evaluates the model per draw; it is used in tests to check the first-order resul
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
@@ -91,7 +92,7 @@ class InputSet:
             bound = u[cov.first].u * u[cov.second].u
             validate.number(f"cov({cov.first}, {cov.second})", cov.value, -bound, bound)
 
-    @property
+    @functools.cached_property
     def names(self) -> tuple[str, ...]:
         return tuple(q.name for q in self.quantities)
 
@@ -113,7 +114,7 @@ class InputSet:
         return v
 
     def mapping(self, values: Sequence[float]) -> dict[str, float]:
-        return {name: float(x) for name, x in zip(self.names, values)}
+        return dict(zip(self.names, np.asarray(values, dtype=float).tolist()))
 
 
 @dataclass(frozen=True)

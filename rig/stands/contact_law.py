@@ -229,12 +229,17 @@ class LawCoefficients:
 
     def __call__(self, l_over_a: float, c_over_a: float, alpha: float) -> tuple[float, float, float]:
         d = self.domain
-        for name, x, (lo, hi) in (("l/a", l_over_a, d.l_over_a), ("c/a", c_over_a, d.c_over_a), ("alpha'", alpha, d.alpha)):
-            if not lo <= x <= hi:
-                raise OutsideModelDomain(name, x, f"[{lo:.6g}, {hi:.6g}], the domain of the stand's contact law",
-                                         hint="the rolling point or alpha' left the table (hard case 6)")
-        nu = np.asarray(self.law(float(l_over_a), float(c_over_a), float(alpha)), dtype=float)
-        return tuple(float(x) for x in nu.reshape(3))
+        if not (d.l_over_a[0] <= l_over_a <= d.l_over_a[1] and d.c_over_a[0] <= c_over_a <= d.c_over_a[1]
+                and d.alpha[0] <= alpha <= d.alpha[1]):
+            for name, x, (lo, hi) in (("l/a", l_over_a, d.l_over_a), ("c/a", c_over_a, d.c_over_a),
+                                      ("alpha'", alpha, d.alpha)):
+                if not lo <= x <= hi:
+                    raise OutsideModelDomain(name, x, f"[{lo:.6g}, {hi:.6g}], the domain of the stand's contact law",
+                                             hint="the rolling point or alpha' left the table (hard case 6)")
+        nu = self.law(float(l_over_a), float(c_over_a), float(alpha))
+        if isinstance(self.law, ContactLaw):  # its scalar path gives three floats
+            return nu
+        return tuple(float(x) for x in np.asarray(nu, dtype=float).reshape(3))
 
 
 @dataclass(frozen=True)
