@@ -247,7 +247,7 @@ class SurrogateTable:
         if not (d.l_over_a[0] <= l_over_a <= d.l_over_a[1] and d.c_over_a[0] <= c_over_a <= d.c_over_a[1]
                 and d.alpha[0] < alpha <= d.alpha[1]):
             return self.evaluate(l_over_a, c_over_a, alpha)[0][:, 0]
-        return self._spline.evaluate_one((l_over_a, c_over_a, math.log(alpha)))[:, 0]
+        return self._spline.value_one((l_over_a, c_over_a, math.log(alpha)))
 
     def _bridge(self, r: np.ndarray, l: np.ndarray, c: np.ndarray, a: np.ndarray):
         """Quadratic in alpha' on [0, alpha_lo): value f0 at 0, value and slope of the spline at alpha_lo.

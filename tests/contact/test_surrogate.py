@@ -71,6 +71,8 @@ def test_spline_reproduces_a_cubic_and_its_derivatives_exactly():
     np.testing.assert_allclose(r[:, 5], -6 * z**2, atol=1e-10)  # d2/dx dz
     one = np.array([spline.evaluate_one(tuple(p[:, i]))[0] for i in range(p.shape[1])])
     np.testing.assert_allclose(one, r, atol=1e-12)
+    value = np.array([spline.value_one(tuple(p[:, i]))[0] for i in range(p.shape[1])])  # the value-only path
+    np.testing.assert_allclose(value, f(x, y, z), atol=1e-12)
 
 
 # --- nodes, between nodes, independent numbers -----------------------------------------------------
