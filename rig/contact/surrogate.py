@@ -242,12 +242,14 @@ class SurrogateTable:
         return r[:, 0], jac
 
     def value_one(self, l_over_a: float, c_over_a: float, alpha: float) -> np.ndarray:
-        """Values (3,) at one state given as floats (no Jacobian)."""
+        """Values (3,) at one state given as floats (no Jacobian); alpha' on the domain's lower end (where
+        a stand clamps it) is the first node, as in :meth:`evaluate`."""
         d = self.inputs.domain
         if not (d.l_over_a[0] <= l_over_a <= d.l_over_a[1] and d.c_over_a[0] <= c_over_a <= d.c_over_a[1]
-                and d.alpha[0] < alpha <= d.alpha[1]):
+                and d.alpha[0] <= alpha <= d.alpha[1]):
             return self.evaluate(l_over_a, c_over_a, alpha)[0][:, 0]
-        return self._spline.value_one((l_over_a, c_over_a, math.log(alpha)))
+        log_alpha = self._spline.starts[2] if alpha == d.alpha[0] else math.log(alpha)
+        return self._spline.value_one((l_over_a, c_over_a, float(log_alpha)))
 
     def _bridge(self, r: np.ndarray, l: np.ndarray, c: np.ndarray, a: np.ndarray):
         """Quadratic in alpha' on [0, alpha_lo): value f0 at 0, value and slope of the spline at alpha_lo.

@@ -209,8 +209,9 @@ def reduce_point(evaluate: Evaluate, inputs: InputSet, start: Start, relative_st
     restart = Start(nominal.mu if math.isfinite(nominal.mu) else start.mu,
                     (nominal.driver,) if nominal.driver else start.drivers, False, start.no_driver)
     names = tuple(nominal.values)
-    propagation = first_order(lambda x: evaluate(x, restart).values, inputs, names, relative_step)
     values, reasons = dict(nominal.values), dict(nominal.reasons)
+    propagation = first_order(lambda x: evaluate(x, restart).values, inputs, names, relative_step,
+                              np.array([values[n] for n in names]))
     u_all = propagation.uncertainties
     u = {name: float(u_all[i]) if math.isfinite(values[name]) else math.nan for i, name in enumerate(names)}
     for guard in guards:

@@ -145,18 +145,20 @@ def _evaluate(model: Model, inputs: InputSet, x: np.ndarray, output_names: tuple
 
 
 def first_order(
-    model: Model, inputs: InputSet, output_names: Sequence[str], relative_step: float = 1.0
+    model: Model, inputs: InputSet, output_names: Sequence[str], relative_step: float = 1.0,
+    y0: np.ndarray | None = None,
 ) -> Propagation:
     """Propagate with a central-difference Jacobian, step h_i = relative_step u(x_i).
 
     Inputs with u = 0 get a zero column (not evaluated); the step is at least MIN_RELATIVE_STEP
     |x_i|, so that a tiny u cannot make x_i +- h round to x_i. Where a perturbed evaluation is NaN
-    (the chain hit a guard) the derivative, and the uncertainty of that output, is NaN.
+    (the chain hit a guard) the derivative, and the uncertainty of that output, is NaN. ``y0``: the
+    outputs at the inputs' values, when the caller has them (else the model is evaluated there).
     """
     validate.number("relative_step", relative_step, 0.0, lo_open=True)
     names = tuple(output_names)
     x0 = inputs.values
-    y0 = _evaluate(model, inputs, x0, names)
+    y0 = _evaluate(model, inputs, x0, names) if y0 is None else np.asarray(y0, dtype=float)
     jac = np.zeros((len(names), x0.size))
     for i, u in enumerate(inputs.uncertainties):
         if u == 0.0:

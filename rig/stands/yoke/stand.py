@@ -15,7 +15,7 @@ physics in contact_forces, drive_train, brake, steady_state; docs/stand-a.md.
 from __future__ import annotations
 
 from collections import OrderedDict
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from typing import ClassVar
 
 from rig import validate
@@ -32,10 +32,20 @@ from rig.stands.yoke.point import YokePoint
 from rig.stands.yoke.reduction import reduce_log
 from rig.stands.yoke.steady_state import OperatingPoint, steady_state
 
-STEADY_STATES_KEPT = 2
-"""Steady operating points a stand remembers (this point's and the previous one's)."""
+KEPT = 2
+"""Steady operating points and contacts a stand remembers (this point's and the previous one's)."""
 
 DYNAMIC_ONLY = ("drive_compliance", "brake_dynamics", "brake_friction_fluctuation")
+
+
+def _kept(cache: OrderedDict, key, make: Callable[[], object]):
+    """cache[key], made by make() on first use; the oldest entries beyond KEPT are dropped."""
+    found = cache.get(key)
+    if found is None:
+        found = cache[key] = make()
+        while len(cache) > KEPT:
+            cache.popitem(last=False)
+    return found
 
 
 class YokeStand(Stand):
@@ -81,6 +91,7 @@ class YokeStand(Stand):
         self._law_factory = law_factory
         self._calibrations: dict[int, object] = {}
         self._steady: OrderedDict[tuple, OperatingPoint] = OrderedDict()
+        self._contacts: OrderedDict[tuple[float, float], StandAContact] = OrderedDict()
 
     def _check_effects(self, drive: DriveMode) -> None:
         if drive is DriveMode.QUASI_STATIC:
@@ -119,29 +130,27 @@ class YokeStand(Stand):
         return out
 
     def contact_for(self, settings: Mapping[str, float]) -> StandAContact:
-        """The contact of an operating point's settings (F_N, Delta h)."""
-        p = self.params
-        geometry = p.geometry_at(settings["delta_h_m"])
-        f_n = settings["normal_force_N"]
-        b_over_a = geometry.b_over_a(f_n)
-        law, domain = self.law(b_over_a, geometry)
-        return StandAContact(geometry, f_n, b_over_a, p.mu, law, domain, p.slip_speed_eps_m_s)
+        """The contact of an operating point's settings (F_N, Delta h), kept for the last KEPT pairs (a
+        sweep at one load and yoke shift builds it once)."""
+        def make() -> StandAContact:
+            p = self.params
+            geometry = p.geometry_at(settings["delta_h_m"])
+            f_n = settings["normal_force_N"]
+            b_over_a = geometry.b_over_a(f_n)
+            law, domain = self.law(b_over_a, geometry)
+            return StandAContact(geometry, f_n, b_over_a, p.mu, law, domain, p.slip_speed_eps_m_s)
+
+        return _kept(self._contacts, (settings["normal_force_N"], settings["delta_h_m"]), make)
 
     def steady_state(self, settings: Mapping[str, float], bearing: BearingFriction | None) -> OperatingPoint:
         """The steady operating point of checked ``settings`` (rig.stands.yoke.steady_state), kept for
-        the last STEADY_STATES_KEPT settings: a point's start is the previous point's steady state,
-        which that point has just computed (a pure function of the settings, so reusing it changes
-        nothing). Raises ParameterError where there is none (never kept)."""
+        the last KEPT settings: a point's start is the previous point's steady state, which that point
+        has just computed (a pure function of the settings, so reusing it changes nothing). Raises
+        ParameterError where there is none (never kept)."""
         key = (tuple(sorted(settings.items())), None if bearing is None else (bearing.moment_1, bearing.moment_2))
-        found = self._steady.get(key)
-        if found is None:
-            found = steady_state(self.contact_for(settings), settings["omega_1_set_rad_s"],
-                                 settings["brake_setpoint_N_m"], brake_speed_eps=self.params.brake_speed_eps_rad_s,
-                                 bearing=bearing)
-            self._steady[key] = found
-            while len(self._steady) > STEADY_STATES_KEPT:
-                self._steady.popitem(last=False)
-        return found
+        return _kept(self._steady, key, lambda: steady_state(
+            self.contact_for(settings), settings["omega_1_set_rad_s"], settings["brake_setpoint_N_m"],
+            brake_speed_eps=self.params.brake_speed_eps_rad_s, bearing=bearing))
 
     def calibration(self, seed: int):
         """The calibration record of dynamometer 10 for the run ``seed`` (made once, then kept)."""
