@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
@@ -36,8 +37,10 @@ from rig.contact.materials import (
     contact_modulus,
     substitute_modulus,
 )
-from rig.contact.transient import RollingPath, WorkMap, solve_transient
 from rig.reduction.geometry import StandBGeometry
+
+if TYPE_CHECKING:
+    from rig.contact.transient import WorkMap
 
 SWEEP_COLUMNS = ["stroke_ratio", "max_work_J_m2", "max_slip_path_m", "max_slip_lengthwise_m", "max_slip_crosswise_m"]
 
@@ -137,6 +140,10 @@ class OscillatingContact:
 
 def cycle_work(contact: OscillatingContact, stroke_ratio: float, n: int) -> WorkMap:
     """Work density [J/m^2] and slip paths [m] on the material over the second of two cycles."""
+    # imported on first use: the transient solver's compiled loops (numba) cost ~0.2 s to import,
+    # which every `rig` command would pay (this module is imported to validate oscillation scenes)
+    from rig.contact.transient import RollingPath, WorkMap, solve_transient
+
     e = validate.number("stroke_ratio", stroke_ratio, 0.0, 20.0)
     grid = make_grid(contact.shape, contact.b_over_a, n)
     stroke = 2.0 * contact.b_over_a * e  # x = 2 b e, in units of a

@@ -23,7 +23,7 @@ from rig.contact.grid import SHAPES, make_grid
 from rig.contact.integrate import coefficients
 from rig.contact.kalker import B_OVER_A_RANGE, creep_coefficients
 from rig.contact.kinematics import Creepage
-from rig.contact.models import fastsim, kinematic, linear, rigid
+from rig.contact.models import fastsim, linear, rigid
 from rig.contact.result import ContactMaps, ContactResult
 from rig.errors import ParameterError
 
@@ -155,6 +155,10 @@ def _solve(model, shape, b_over_a, creepage, rolling_point, nu, n, effects, info
         slip = np.where(stick, 0.0, s_g)  # FASTSIM's slip direction follows the rigid slip
         info["flexibility"] = flex
     else:
+        # imported on first use: its compiled loops (numba) cost ~0.2 s to import, which a run on cached
+        # surrogate tables never needs
+        from rig.contact.models import kinematic
+
         solution = kinematic.solve_grid(grid, nu, creepage, built)
         q, stick, slip = solution.q, solution.stick, solution.s
         info.update(
