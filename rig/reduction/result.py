@@ -36,25 +36,29 @@ from rig.reduction.uncertainty import InputSet, Propagation, first_order
 class Start:
     """Where a chain evaluation starts: mu [1] for the mu <-> alpha' iteration, the friction
     estimates allowed to drive alpha' in order of preference (the first that works is used),
-    whether to probe the identifiability at the fixed point (nominal evaluation only), and why
-    no estimate may drive alpha' when ``drivers`` is empty."""
+    whether to probe the identifiability at the fixed point (nominal evaluation only), why
+    no estimate may drive alpha' when ``drivers`` is empty, and the slope d ln g/d ln mu there
+    [1] when known (the nominal fixed point's, for a perturbed evaluation; NaN: not known)."""
 
     mu: float
     drivers: tuple[str, ...]
     probe: bool = True
     no_driver: str = ""
+    slope: float = math.nan
 
 
 @dataclass(frozen=True)
 class Evaluation:
     """One pass of a chain: output values (NaN where undefined), reasons for the NaNs, the mu used
-    in alpha' [1], iterations, and the estimate that drove alpha' ("" if none)."""
+    in alpha' [1], iterations, the estimate that drove alpha' ("" if none) and the slope d ln g/d ln
+    mu probed at the fixed point [1] (NaN when not probed)."""
 
     values: dict[str, float]
     reasons: dict[str, str]
     mu: float
     iterations: int
     driver: str = ""
+    slope: float = math.nan
 
 
 def evaluate_fixed_point(state_at: Callable[[float], tuple[dict, dict]], start: Start, settings: ReductionSettings,
@@ -73,12 +77,13 @@ def evaluate_fixed_point(state_at: Callable[[float], tuple[dict, dict]], start: 
             return math.nan, (state, reasons), reasons.get(driver) or f"{driver} = {value:.6g} is not positive"
         return estimate
 
-    fixed, driver = solve_with_drivers(make_estimate, start.drivers, start.mu, start.probe, settings, start.no_driver)
+    fixed, driver = solve_with_drivers(make_estimate, start.drivers, start.mu, start.probe, settings, start.no_driver,
+                                       start.slope)
     if fixed.reason:
         return Evaluation(out, dict.fromkeys(driven, fixed.reason), math.nan, fixed.iterations)
     state, reasons = fixed.state
     out.update(state)
-    return Evaluation(out, dict(reasons), fixed.mu, fixed.iterations, driver)
+    return Evaluation(out, dict(reasons), fixed.mu, fixed.iterations, driver, fixed.slope)
 
 
 @dataclass(frozen=True)
@@ -207,7 +212,7 @@ def reduce_point(evaluate: Evaluate, inputs: InputSet, start: Start, relative_st
     """
     nominal = evaluate(inputs.mapping(inputs.values), start)
     restart = Start(nominal.mu if math.isfinite(nominal.mu) else start.mu,
-                    (nominal.driver,) if nominal.driver else start.drivers, False, start.no_driver)
+                    (nominal.driver,) if nominal.driver else start.drivers, False, start.no_driver, nominal.slope)
     names = tuple(nominal.values)
     values, reasons = dict(nominal.values), dict(nominal.reasons)
     propagation = first_order(lambda x: evaluate(x, restart).values, inputs, names, relative_step,

@@ -41,6 +41,22 @@ def test_power_law_maps_converge_to_their_fixed_point_from_any_start(power, targ
     assert fp.state["mu_in"] == fp.mu
 
 
+@given(power=st.floats(-0.8, 3.0), target=st.floats(0.05, 1.5), start=st.floats(0.5, 2.0))
+def test_a_known_slope_makes_the_first_step_newtons(power, target, start):
+    # a perturbed evaluation restarts at the nominal fixed point with its probed slope: on a power law
+    # (ln g linear in ln mu, slope -p) the first step lands on the fixed point, the second estimate confirms it
+    estimate, calls = fixed_map(lambda mu: target * (target / mu) ** power)
+    fp = solve_mu(estimate, SETTINGS, probe=False, mu_start=target * start, slope=-power)
+    assert fp.mu == pytest.approx(target, rel=1e-9) and len(calls) == 2
+    estimate, calls = fixed_map(lambda mu: target * (target / mu) ** power)
+    assert solve_mu(estimate, SETTINGS, probe=False, mu_start=target * start).mu == pytest.approx(target, rel=1e-7)
+
+
+def test_the_probe_reports_the_slope_at_the_fixed_point():
+    estimate, _ = fixed_map(lambda mu: 0.3 * (0.3 / mu) ** 0.6)  # d ln g/d ln mu = -0.6 everywhere
+    assert solve_mu(estimate, SETTINGS).slope == pytest.approx(-0.6, rel=1e-9)
+
+
 def test_nonlinear_falling_map_like_mu_v_of_alpha():
     # g(mu) = F/(F_N nu_v(k mu)) with nu_v rising in alpha': fixed point of mu (0.3 + 0.1 mu) = 0.1318...
     estimate, calls = fixed_map(lambda mu: 0.04 / (0.3 + 0.1 * mu) * 1.0)

@@ -4,7 +4,9 @@ Data: tests/logbook/data/old_layout_v1.h5, a 4-point stand-A log written by the 
 format version 2 (commit aafa9bc) from old_layout_v1.toml, and its reduced.csv as the current
 reduction gives it (regenerate with ``rig reduce`` on a copy of the log when the contact law
 changes: FASTSIM's three flexibilities moved its values by <= 2e-5, its spin-moment flexibility L4 by <= 4e-4,
-the kinematic model's rim loads and leading-edge cells (discretisation revision 7) mu_v by <= 2e-4 relative). A columnar log of the same
+the kinematic model's rim loads and leading-edge cells (discretisation revision 7) mu_v by <= 2e-4 relative;
+or the reduction's numerics: the Newton first step of the Jacobian's mu iterations moved u and U95 by <= 2e-8
+relative, the values not at all). A columnar log of the same
 scene is made by running the scene again; it is simulated with today's contact law, so its
 values agree with the old log's to the size of that change, not to the last digit.
 """
