@@ -13,6 +13,7 @@ DataFrame the readers return also carries the exact units in ``DataFrame.attrs["
 
 from __future__ import annotations
 
+import functools
 import re
 
 from rig.errors import ParameterError
@@ -27,7 +28,13 @@ NAME_RULE = "an identifier of at most 64 ASCII letters, digits and '_', starting
 
 def is_unit(unit: object) -> bool:
     """True if ``unit`` is a string in the log's ASCII unit form."""
-    return isinstance(unit, str) and len(unit) <= MAX_UNIT_LENGTH and UNIT_PATTERN.fullmatch(unit) is not None
+    return isinstance(unit, str) and _unit_form(unit)
+
+
+@functools.lru_cache(maxsize=1024)
+def _unit_form(unit: str) -> bool:
+    """The unit rule for a string, remembered: a study checks the same few units ~10^2 times a point."""
+    return len(unit) <= MAX_UNIT_LENGTH and UNIT_PATTERN.fullmatch(unit) is not None
 
 
 def check_unit(name: str, unit: object) -> str:
@@ -39,7 +46,13 @@ def check_unit(name: str, unit: object) -> str:
 
 def is_name(name: object) -> bool:
     """True if ``name`` may name a channel, setting, reading, counter or calibration record."""
-    return isinstance(name, str) and NAME_PATTERN.fullmatch(name) is not None
+    return isinstance(name, str) and _name_form(name)
+
+
+@functools.lru_cache(maxsize=1024)
+def _name_form(name: str) -> bool:
+    """The name rule for a string, remembered (as _unit_form)."""
+    return NAME_PATTERN.fullmatch(name) is not None
 
 
 def check_name(kind: str, name: object) -> str:

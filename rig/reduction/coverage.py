@@ -91,8 +91,13 @@ def expanded_uncertainty(propagation: Propagation, probability: float = 0.95, dr
     jac = propagation.jacobian[np.ix_(ok, active)]
     # y - y0 = J (rows.T scale).T: the small product first, then (outputs, draws) rows that hold each
     # output's draws contiguously for the quantile
-    spread = _product((np.where(np.isfinite(jac), jac, 0.0) @ scale.T), rows)
-    result[ok] = row_quantiles(np.abs(spread, out=spread), p)  # in place: a second 1 MB array costs its page faults
+    left = np.where(np.isfinite(jac), jac, 0.0) @ scale.T
+    moved = np.flatnonzero(left.any(axis=1))  # an output no input moves (e.g. c at Delta h = 0) has U = 0 exactly
+    found = np.zeros(left.shape[0])
+    if moved.size:
+        spread = _product(left[moved], rows)
+        found[moved] = row_quantiles(np.abs(spread, out=spread), p)  # in place: a second array costs page faults
+    result[ok] = found
     return result
 
 
