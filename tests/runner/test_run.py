@@ -121,3 +121,15 @@ def test_figure_axis_is_labelled_with_the_setting_name_and_unit():
     assert setting_label("brake_setpoint_N_m") == "brake set-point $T_{set}$ [N m]"
     assert setting_label("omega_1_set_rad_s") == r"speed set-point $\omega_1$ [rad/s]"
     assert setting_label("load_N") == "load [N]" and setting_label("speed_step") == "drive speed step [1]"
+
+
+def test_the_drawn_quick_look_figure_carries_that_label(tmp_path, monkeypatch):
+    """Issue 12's rough edge: the figure a run writes, not only the label function (x was the raw key load_N)."""
+    import rig.plotting
+
+    drawn, new_figure = [], rig.plotting.new_figure
+    monkeypatch.setattr(rig.plotting, "new_figure", lambda **kwargs: drawn.append(new_figure(**kwargs)) or drawn[-1])
+    run(tmp_path)
+    panels = [ax for ax in drawn[0].axes if ax.get_visible()]
+    assert [ax.get_ylabel() for ax in panels] == ["$l/a$", "$c/a$", r"$\mu_v$", r"$\mu_T$"]
+    assert {ax.get_xlabel() for ax in panels} == {"load [N]"}
