@@ -9,7 +9,9 @@ fresh process (imports, the table from a warm cache, the sweep, log, reduction, 
 Reported per size: median wall time [s] and its spread over the repeats, the time per point
 [ms], the marginal time per point between sizes [ms] (linear growth: the marginal cost does not
 rise with the size), log.h5 [bytes], the raw samples the points really record (dynamometer and
-balance channels: 8 bytes a sample) and the log's overhead beyond them [bytes per point].
+balance channels: 8 bytes a sample), the log's overhead beyond them [bytes per point] and the
+time to read every group of the log as DataFrames, one call each (rig.logbook's settings,
+readings, counters, calibration and the truth) [s].
 
 ``--study N`` runs a large study of N points as a user would run it, twice: on a Dask
 LocalCluster of ``--study-workers`` single-thread worker processes (`rig run --scheduler`) and
@@ -22,6 +24,7 @@ printed beside them. Never asserts: a benchmark reports.
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import resource
 import statistics
@@ -35,6 +38,7 @@ import h5py
 
 BUDGET_S_1600 = 10.0  # issue 12: 1 600 points <= 10 s with -j 1
 BUDGET_OVERHEAD_B = 1024.0  # issue 12: <= 1 KB per point beyond the raw samples
+BUDGET_FRAMES_S = 0.5  # issue 12: a group of 1 600 points as a DataFrame in one call, <= 0.5 s
 
 
 def scene_file(folder: Path, points: int, gate_time_s: float) -> Path:
@@ -62,8 +66,20 @@ def raw_sample_bytes(log: Path) -> int:
     return total
 
 
+def frames_s(log: Path) -> float:
+    """Wall time [s] to read the log's groups as DataFrames, one call per group."""
+    from rig.logbook import read_calibration, read_counters, read_readings, read_settings
+    from rig.logbook.truth import read_truth
+
+    t0 = time.perf_counter()
+    for read in (read_settings, read_readings, read_counters, read_calibration, read_truth):
+        read(log)
+    return time.perf_counter() - t0
+
+
 def run_once(scene: Path, jobs: int, extra: list[str] | None = None) -> dict[str, float]:
-    """One `python -m rig run` in a fresh process: wall, CPU [s], load average, log bytes."""
+    """One `python -m rig run` in a fresh process: wall, CPU [s], load average, log bytes, and the
+    time to read the log's groups as DataFrames [s]."""
     load = os.getloadavg()[0]
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     with tempfile.TemporaryDirectory(prefix="bench_scale_") as out:
@@ -74,11 +90,12 @@ def run_once(scene: Path, jobs: int, extra: list[str] | None = None) -> dict[str
         log = Path(out) / "log.h5"
         size = log.stat().st_size if log.exists() else 0
         raw = raw_sample_bytes(log) if log.exists() else 0
+        frames = frames_s(log) if log.exists() else math.nan
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if done.returncode != 0:
         print(f"warning: `{' '.join(command)}` exited with {done.returncode}:\n{done.stderr[-2000:]}", file=sys.stderr)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return {"wall": wall, "cpu": cpu, "load": load, "size": size, "raw": raw}
+    return {"wall": wall, "cpu": cpu, "load": load, "size": size, "raw": raw, "frames": frames}
 
 
 def dask_run(scene: Path, workers: int) -> dict[str, float]:
@@ -119,7 +136,7 @@ def main() -> int:
         print(f"default scene, gate {args.gate_time:g} s, --jobs {args.jobs}, {args.repeats} run(s) per size; "
               "wall times on a shared machine are noisy (CPU time and load average beside them)")
         print(f"{'points':>7} {'wall [s]':>9} {'spread':>7} {'CPU [s]':>8} {'load':>5} {'ms/point':>9} "
-              f"{'marginal':>9} {'log [B]':>11} {'raw [B/pt]':>10} {'overhead [B/pt]':>15}")
+              f"{'marginal':>9} {'log [B]':>11} {'raw [B/pt]':>10} {'overhead [B/pt]':>15} {'frames [s]':>10}")
         previous = None
         for n in args.points:
             scene = scene_file(Path(folder), n, args.gate_time)
@@ -128,14 +145,16 @@ def main() -> int:
             spread = max(r["wall"] for r in runs) - min(r["wall"] for r in runs)
             cpu = statistics.median(r["cpu"] for r in runs)
             size, raw = runs[0]["size"], runs[0]["raw"]
+            frames = statistics.median(r["frames"] for r in runs)
             marginal = "" if previous is None else f"{1e3 * (wall - previous[1]) / (n - previous[0]):.2f}"
             print(f"{n:>7} {wall:>9.2f} {spread:>7.2f} {cpu:>8.2f} {runs[0]['load']:>5.2f} {1e3 * wall / n:>9.2f} "
-                  f"{marginal:>9} {size:>11} {raw / n:>10.0f} {(size - raw) / n:>15.0f}")
+                  f"{marginal:>9} {size:>11} {raw / n:>10.0f} {(size - raw) / n:>15.0f} {frames:>10.3f}")
             previous = (n, wall)
             if n == 1600:
                 print(f"        budget: 1 600 points <= {BUDGET_S_1600:g} s ({'met' if wall <= BUDGET_S_1600 else 'NOT met'}), "
                       f"overhead <= {BUDGET_OVERHEAD_B:g} B/point "
-                      f"({'met' if (size - raw) / n <= BUDGET_OVERHEAD_B else 'NOT met'})")
+                      f"({'met' if (size - raw) / n <= BUDGET_OVERHEAD_B else 'NOT met'}), "
+                      f"every group as a DataFrame <= {BUDGET_FRAMES_S:g} s ({'met' if frames <= BUDGET_FRAMES_S else 'NOT met'})")
         if args.study:
             scene = scene_file(Path(folder), args.study, args.gate_time)
             print(study_line(f"Dask LocalCluster, {args.study_workers} workers", args.study,
