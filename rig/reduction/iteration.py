@@ -3,9 +3,9 @@
 alpha' (eq. 21) contains mu, and the model coefficients nu_T, nu_v, nu_0 depend on alpha', so
 the reduced mu solves mu = g(mu), g(mu) = the estimate from the readings with the coefficients
 at alpha'(mu). With y = ln(mu), G = ln(g) we iterate y <- q y + (1 - q) G(y): the first step
-uses the fixed damping q = 1 - damping, later steps Wegstein's q = s/(s - 1) from the secant
-slope s of G, bounded to [Q_MIN, Q_MAX] (damping when g falls with mu, acceleration when it
-rises). A cap on the iterations ends hopeless cases with NaN and a reason. At the fixed point
+uses the fixed damping q = 1 - damping (or Wegstein's with a slope known at the start), later
+steps Wegstein's q = s/(s - 1) from the secant slope s of G, bounded to [Q_MIN, Q_MAX] (damping
+when g falls with mu, acceleration when it rises). A cap on the iterations ends hopeless cases with NaN and a reason. At the fixed point
 the slope s = d ln g/d ln mu is probed once: errors of the readings reach mu amplified by
 1/(1 - s), and s -> 1 in the linear regime (F_y independent of mu), where mu is not identifiable
 (NaN with the reason).
