@@ -111,6 +111,10 @@ def dask_run(scene: Path, workers: int) -> dict[str, float]:
     return run
 
 
+def verdict(met: bool) -> str:
+    return "met" if met else "NOT met"
+
+
 def study_line(label: str, points: int, run: dict[str, float]) -> str:
     """One line of a large study's result."""
     return (f"{label}: {points} points in {run['wall']:.1f} s (CPU {run['cpu']:.0f} s, load {run['load']:.1f}) = "
@@ -151,10 +155,9 @@ def main() -> int:
                   f"{marginal:>9} {size:>11} {raw / n:>10.0f} {(size - raw) / n:>15.0f} {frames:>10.3f}")
             previous = (n, wall)
             if n == 1600:
-                print(f"        budget: 1 600 points <= {BUDGET_S_1600:g} s ({'met' if wall <= BUDGET_S_1600 else 'NOT met'}), "
-                      f"overhead <= {BUDGET_OVERHEAD_B:g} B/point "
-                      f"({'met' if (size - raw) / n <= BUDGET_OVERHEAD_B else 'NOT met'}), "
-                      f"every group as a DataFrame <= {BUDGET_FRAMES_S:g} s ({'met' if frames <= BUDGET_FRAMES_S else 'NOT met'})")
+                print(f"        budget: 1 600 points <= {BUDGET_S_1600:g} s ({verdict(wall <= BUDGET_S_1600)}), "
+                      f"overhead <= {BUDGET_OVERHEAD_B:g} B/point ({verdict((size - raw) / n <= BUDGET_OVERHEAD_B)}), "
+                      f"every group as a DataFrame <= {BUDGET_FRAMES_S:g} s ({verdict(frames <= BUDGET_FRAMES_S)})")
         if args.study:
             scene = scene_file(Path(folder), args.study, args.gate_time)
             print(study_line(f"Dask LocalCluster, {args.study_workers} workers", args.study,

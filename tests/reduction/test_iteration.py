@@ -41,7 +41,8 @@ def test_power_law_maps_converge_to_their_fixed_point_from_any_start(power, targ
     assert fp.state["mu_in"] == fp.mu
 
 
-@given(power=st.floats(-0.8, 3.0), target=st.floats(0.05, 1.5), start=st.floats(0.5, 2.0))
+@given(power=st.floats(-0.8, 3.0), target=st.floats(0.05, 1.5),
+       start=st.one_of(st.floats(0.5, 0.9), st.floats(1.1, 2.0)))  # a start on the fixed point needs one estimate
 def test_a_known_slope_makes_the_first_step_newtons(power, target, start):
     # a perturbed evaluation restarts at the nominal fixed point with its probed slope: on a power law
     # (ln g linear in ln mu, slope -p) the first step lands on the fixed point, the second estimate confirms it
