@@ -112,6 +112,7 @@ def dask_run(scene: Path, workers: int) -> dict[str, float]:
 
 
 def verdict(met: bool) -> str:
+    """A budget's verdict as printed."""
     return "met" if met else "NOT met"
 
 
