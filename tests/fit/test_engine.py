@@ -90,3 +90,38 @@ def test_estimated_scatter_makes_chi2_equal_the_degrees_of_freedom():
     result = fit(LinearModel(basis, y, u / 5.0), [0.0, 0.0], polish="never", scatter=None)
     assert result.scatter > 0
     assert result.chi2 == pytest.approx(y.size - 2, rel=1e-2)
+
+
+class LineWithNoisyX(LinearModel):
+    """y = a + b x with x itself measured (u_x): the forward model's dl shifts every x."""
+
+    def __init__(self, x: np.ndarray, y: np.ndarray, u: np.ndarray, u_x: np.ndarray) -> None:
+        super().__init__(np.column_stack([np.ones_like(x), x]), y, u)
+        self.x = x
+        self.obs.u_l = u_x
+
+    def predict(self, theta, dl=0.0):
+        self.evaluations += 1
+        return theta[0] + theta[1] * (self.x + dl)
+
+
+def test_errors_in_the_regressor_give_demings_line_not_an_attenuated_slope():
+    """Errors in l/a: the engine's chi2 with df/dl at theta is orthogonal distance regression,
+    which for a straight line with constant u_x, u_y has Deming's closed form (independent number).
+    With df/dl held fixed during the minimisation (the engine before) the weights are constant and
+    the slope is the ordinary least-squares one, attenuated towards 0 (here by 4 %)."""
+    rng = np.random.default_rng(7)
+    x_true = np.linspace(0.0, 2.0, 40)
+    u_x, u_y = 0.15, 0.05
+    x = x_true + u_x * rng.standard_normal(x_true.size)
+    y = 0.3 - 0.7 * x_true + u_y * rng.standard_normal(x_true.size)
+    result = fit(LineWithNoisyX(x, y, np.full(x.size, u_y), np.full(x.size, u_x)), [0.0, 0.0], polish="never",
+                 profile=False)
+    ratio = u_y**2 / u_x**2
+    sxx, syy, sxy = np.var(x), np.var(y), np.cov(x, y, bias=True)[0, 1]
+    slope = (syy - ratio * sxx + np.sqrt((syy - ratio * sxx) ** 2 + 4 * ratio * sxy**2)) / (2 * sxy)
+    intercept = y.mean() - slope * x.mean()
+    ols = np.polyfit(x, y, 1)[0]
+    assert abs(ols - slope) > 0.02  # the two answers differ by far more than the tolerance below
+    assert result.estimate("b").value == pytest.approx(slope, abs=1e-6)
+    assert result.estimate("a").value == pytest.approx(intercept, abs=1e-6)
