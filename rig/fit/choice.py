@@ -18,7 +18,7 @@ import numpy as np
 from scipy.stats import chi2 as chi2_dist
 
 from rig.fit.data import Observations
-from rig.fit.engine import FitResult, Weights, effective_u, fit
+from rig.fit.engine import FitResult, Objective, fit
 from rig.fit.forward import ForwardModel
 from rig.fit.parameters import FitParameter
 
@@ -96,9 +96,10 @@ def rank_models(obs: Observations, free: Sequence[FitParameter], fixed: Mapping[
 
 def _nothing_free(model: ForwardModel, scatter: float) -> FitResult:
     obs = model.obs
-    prediction = model.predict(np.empty(0))
-    u_eff = effective_u(model, np.empty(0), scatter)
-    chi2 = float(np.sum(Weights(u_eff, obs.common_cov)(obs.y - prediction) ** 2))
+    theta = np.empty(0)
+    objective = Objective(model, scatter)
+    prediction = model.predict(theta)
+    chi2 = float(np.sum(objective.residual(theta) ** 2))
     return FitResult(names=(), estimates=(), correlation=np.zeros((0, 0)), chi2=chi2, n_points=obs.size,
-                     prediction=prediction, band=np.zeros(obs.size), u_eff=u_eff, warnings=(),
+                     prediction=prediction, band=np.zeros(obs.size), u_eff=objective.weights(theta).u_total, warnings=(),
                      evaluations=1, message="no free parameter", scatter=scatter)

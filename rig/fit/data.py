@@ -24,6 +24,7 @@ import pandas as pd
 
 from rig import validate
 from rig.errors import ParameterError
+from rig.fit.common_errors import CommonErrors, read_common_errors
 
 CONTACT_QUANTITIES = ("nu_T", "nu_v", "nu_0")
 X_COLUMNS = ("alpha", "l_over_a", "c_over_a")
@@ -49,9 +50,8 @@ class Observations:
     l, c: rolling point [units of a]; u_l: its standard uncertainty (0 when exact);
     alpha: alpha' [1] where fixed by the data, NaN where alpha' = mu alpha_per_mu;
     b_over_a [1]; series: label of each point's curve; stand: the Stand when the data is a run;
-    common_cov: (N, N) covariance of errors shared between points (the dynamometer's calibration
-    sensitivity and offset, one calibration per run, and its zero drift since that calibration,
-    a random walk), already inside u; None when there is none.
+    common: errors shared between points (rig.fit.common_errors: the dynamometer's one calibration
+    and its zero drift since then), already inside u; None when there is none.
     """
 
     quantity: np.ndarray
@@ -72,11 +72,19 @@ class Observations:
     stand: object | None = None
     geometry: object | None = None
     notes: tuple[str, ...] = field(default_factory=tuple)
-    common_cov: np.ndarray | None = None
+    common: CommonErrors | None = None
 
     @property
     def size(self) -> int:
         return int(self.y.size)
+
+    @property
+    def u_independent(self) -> np.ndarray:
+        """The part of u not shared with other points [units of y]: u^2 less the common errors'
+        variance at the measured y, where the reduction propagated them."""
+        if self.common is None:
+            return self.u
+        return np.sqrt(np.clip(self.u**2 - np.diag(self.common.covariance(self.y)), 0.0, None))
 
     @property
     def mu_dependent(self) -> bool:
@@ -243,12 +251,9 @@ def load_stand_a_run(path: str | Path, scene=None, *, n: int | None = None) -> O
     if np.any(u <= 0):
         raise ParameterError("u_F_y_N", float(u.min() * f_n[np.argmin(u)]), "> 0 N for every point fitted")
     notes = [f"{dropped} point(s) without l/a or F_y (reduction's reason) left out"] if dropped else []
-    common, note = _calibration_covariance(read_calibration(log).loc[rows], y, f_n, geometries)
-    notes.append(note)
-    drift, note = _drift_covariance(read_readings(log).loc[rows], read_calibration(log).loc[rows], f_n, geometries)
-    notes.append(note)
-    if drift is not None:
-        common = drift if common is None else common + drift
+    common, common_notes = read_common_errors(read_calibration(log).loc[rows], read_readings(log).loc[rows], f_n,
+                                              geometries)
+    notes.extend(common_notes)
     return Observations(
         quantity=np.full(y.size, "F_y_per_F_N"), y=y, u=u,
         x=_finite("l_over_a", table["l_over_a"].to_numpy(), rows), x_label="l/a",
@@ -258,61 +263,8 @@ def load_stand_a_run(path: str | Path, scene=None, *, n: int | None = None) -> O
         series=np.array([f"F_N = {f:g} N" for f in f_n]),
         contact=ContactCondition(spec.model, "line", spec.poisson, spec.n if n is None else n),
         fixed_effects=dict(spec.effects), source=f"{path} (stand A, scene {scene.name})",
-        stand=stand, geometry=geometries, notes=tuple(notes), common_cov=common,
+        stand=stand, geometry=geometries, notes=tuple(notes), common=common,
     )
-
-
-CAL = "dynamometer_10_"
-
-
-def _calibration_covariance(cal: pd.DataFrame, y: np.ndarray, f_n: np.ndarray, geometries) -> tuple:
-    """Covariance of y = F_y/F_N shared by all points through the dynamometer's one calibration.
-
-    F_y = (s - s0)/S (lever_dyn/R_v) (eq. 33): dy/dS = -y/S, dy/ds0 = -(lever_dyn/R_v)/(S F_N);
-    cov = a a^T u_S^2 + b b^T u_s0^2 + (a b^T + b a^T) cov(S, s0) with the record's u and cov.
-    """
-    columns = ["sensitivity_V_N", "u_sensitivity_V_N", "u_offset_V", "cov_sensitivity_offset_V2_N"]
-    if any(CAL + c not in cal.columns for c in columns):
-        return None, "no dynamometer calibration record in the log: errors treated as independent"
-    values = cal[[CAL + c for c in columns]].to_numpy(dtype=float)
-    if not np.allclose(values, values[0], rtol=0, atol=0):
-        return None, "dynamometer calibrated more than once: calibration errors treated as independent"
-    sens, u_sens, u_off, cov_so = values[0]
-    lever = np.array([g.dynamometer_lever / g.yoke_lever for g in geometries])
-    a = -y / sens
-    b = -lever / (sens * f_n)
-    common = np.outer(a, a) * u_sens**2 + np.outer(b, b) * u_off**2 + (np.outer(a, b) + np.outer(b, a)) * cov_so
-    return common, (f"dynamometer calibration common to all points (u(S)/S = {u_sens / sens:.2%}, u(s0) = "
-                    f"{u_off:.3g} V): generalised least squares with its covariance")
-
-
-DRIFT_COLUMNS = ("dynamometer_gain", "dynamometer_drift_variance_rate_V2_s", "dynamometer_zero_age_s")
-
-
-def _drift_covariance(readings: pd.DataFrame, cal: pd.DataFrame, f_n: np.ndarray, geometries) -> tuple:
-    """Covariance of y = F_y/F_N from the dynamometer's zero drift since the calibration took the zero.
-
-    The zero walks as an input-referred random walk (sensors.noise.RandomWalkDrift) amplified g
-    times: cov(z_i, z_j) = g^2 D^2 min(t_i, t_j) [V^2] with t the zero's age at each point (the
-    log's readings, rig.stands.yoke.instruments.zero_drift_readings); dy/dz = -(lever_dyn/R_v)/(S F_N)
-    (eq. 33). Its diagonal is the reduction's ``dyn_zero_drift_V`` term, already inside u(F_y).
-    """
-    if any(c not in readings.columns for c in DRIFT_COLUMNS) or CAL + "sensitivity_V_N" not in cal.columns:
-        return None, ("the log does not record dynamometer 10's zero drift: no covariance between points "
-                      "beyond the calibration's")
-    gain, rate, age = (readings[c].to_numpy(dtype=float) for c in DRIFT_COLUMNS)
-    if not (np.allclose(gain, gain[0], rtol=0, atol=0) and np.allclose(rate, rate[0], rtol=0, atol=0)):
-        raise ParameterError("dynamometer drift readings", f"gain {sorted(set(gain))}, rate {sorted(set(rate))}",
-                             "one gain and one drift variance rate per run")
-    if rate[0] == 0.0:
-        return None, "dynamometer 10's zero drift is off in this log: no covariance between points from it"
-    sens = cal[CAL + "sensitivity_V_N"].to_numpy(dtype=float)
-    b = np.array([g.dynamometer_lever / g.yoke_lever for g in geometries]) / (sens * f_n)
-    cov = gain[0] ** 2 * rate[0] * np.minimum.outer(age, age) * np.outer(b, b)
-    return cov, (f"dynamometer 10's zero drift since the calibration (random walk, g D = "
-                 f"{gain[0] * math.sqrt(rate[0]):.3g} V/s^0.5): covariance g^2 D^2 min(t_i, t_j) between "
-                 f"points (t = {age.min():.0f}-{age.max():.0f} s after the zero) added to the generalised "
-                 "least squares")
 
 
 def is_digitised(path: str | Path, sidecar: str | Path | None) -> bool:

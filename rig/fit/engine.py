@@ -1,8 +1,9 @@
 """Weighted least squares with effective variance, profile-likelihood intervals, correlations.
 
-chi2(theta) = r^T V(theta)^-1 r, r = y - f(theta), V = diag(u_eff^2 - diag C) + C: u_eff^2 = u^2 +
-(df/dl u_l)^2 + s^2 and C the covariance of errors shared between points (a calibration, a zero
-drift; Observations.common_cov; its diagonal is already inside u). The rolling point l/a is
+chi2(theta) = r^T V(theta)^-1 r, r = y - f(theta), V = diag(u_eff^2) + C(f(theta)): u_eff^2 =
+u_i^2 + (df/dl u_l)^2 + s^2 with u_i the independent part of the stated u, and C the covariance
+of errors shared between points (a calibration, a zero drift; rig.fit.common_errors), its
+sensitivity's part at the model's values f(theta), not the measured y. The rolling point l/a is
 itself measured: minimising over the true l/a of every point (orthogonal distance regression)
 with f linearised in l gives exactly this chi2 with df/dl taken *at theta* (Orear's effective
 variance; Deming's regression for a straight line). df/dl therefore moves with theta inside the
@@ -113,7 +114,6 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
     hi = np.array([p.hi for p in free])
     x0 = np.array([p.check(v, "start value of ") for p, v in zip(free, start)])
     x0 = np.clip(x0, lo + 1e-9 * (hi - lo), hi - 1e-9 * (hi - lo))
-    common = obs.common_cov
     objective = Objective(model, 0.0 if scatter is None else float(scatter))
     res = _minimise(objective.residual, x0, lo, hi, label)
     for _ in range(3 if scatter is None else 0):
@@ -160,10 +160,9 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
         for i, p in enumerate(free)
     )
     band = np.sqrt(np.clip(np.einsum("ij,jk,ik->i", slopes, cov, slopes), 0, None))
-    u_total = weights.u_eff if common is None else np.sqrt(np.maximum(weights.u_eff**2, np.diag(common)))
     return FitResult(
         names=tuple(p.name for p in free), estimates=estimates, correlation=corr, chi2=chi2, n_points=obs.size,
-        prediction=(model.direct if polished else predict)(res.x), band=band, u_eff=u_total, warnings=tuple(warnings),
+        prediction=(model.direct if polished else predict)(res.x), band=band, u_eff=weights.u_total, warnings=tuple(warnings),
         evaluations=model.evaluations, message=str(res.message), table_error=table_error, polished=polished,
         scatter=s,
     )
@@ -171,32 +170,57 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
 
 class Objective:
     """Whitened residuals L(theta)^-1 (y - f(theta)) of a model, with V(theta) = L L^T from the
-    effective u at the same theta (module docstring); scatter s [units of y]; predict: f (default
-    the model's table prediction; the polish passes the direct solves, df/dl stays the table's)."""
+    effective u and the common errors at the same theta (module docstring); scatter s [units of
+    y]; predict: f (default the model's table prediction; the polish passes the direct solves,
+    df/dl stays the table's)."""
 
     def __init__(self, model: ForwardModel, scatter: float, predict=None) -> None:
         self.model = model
         self.scatter = scatter
         self.predict = model.predict if predict is None else predict
 
-    def weights(self, theta: np.ndarray) -> Weights:
-        return Weights(effective_u(self.model, theta, self.scatter), self.model.obs.common_cov)
+    def weights(self, theta: np.ndarray, prediction: np.ndarray | None = None) -> Weights:
+        """V at theta; prediction: f(theta) when the caller has it already.
+
+        The calibration's relative error multiplies the true y, estimated by the values the
+        linearised orthogonal distance regression adjusts the points to, f + (df/dl u_l)^2 V*^-1 r
+        (V*: V without that error): their error is uncorrelated with r. Taking f at the measured
+        l/a instead (error df/dl dl) or the measured y (error the y noise) correlates them with r
+        and biases the fit (Peelle's pertinent puzzle, rig.fit.common_errors).
+        """
+        obs = self.model.obs
+        from_l = regressor_variance(self.model, theta)
+        u_eff = np.sqrt(obs.u_independent**2 + from_l + self.scatter**2)
+        if obs.common is None:
+            return Weights(u_eff, None)
+        prediction = self.predict(theta) if prediction is None else prediction
+        residual = obs.y - prediction
+        others = obs.common.covariance(None) + np.diag(u_eff**2)
+        adjusted = prediction + from_l * np.linalg.solve(others, residual)
+        return Weights(u_eff, obs.common.covariance(adjusted))
 
     def residual(self, theta: np.ndarray) -> np.ndarray:
-        return self.weights(theta)(self.model.obs.y - self.predict(theta))
+        prediction = self.predict(theta)
+        return self.weights(theta, prediction)(self.model.obs.y - prediction)
 
 
 class Weights:
-    """Whitening of residuals: L^-1 r with V = L L^T (diagonal when there is no common covariance)."""
+    """Whitening of residuals: L^-1 r with V = diag(u_eff^2) + C = L L^T (diagonal without C).
+
+    u_eff: the independent u per point; common: C or None. The diagonal is kept at least
+    (1 + 1e-9) diag C so that V stays positive definite when u_eff is 0.
+    """
 
     def __init__(self, u_eff: np.ndarray, common: np.ndarray | None) -> None:
         self.u_eff = u_eff
         if common is None:
             self.factor = None
+            self.u_total = u_eff
         else:
             v = common.copy()
-            v[np.diag_indices_from(v)] = np.maximum(u_eff**2, np.diag(common) * (1 + 1e-9))
+            v[np.diag_indices_from(v)] = np.maximum(u_eff**2, 1e-9 * np.diag(common)) + np.diag(common)
             self.factor = np.linalg.cholesky(v)
+            self.u_total = np.sqrt(np.diag(v))
 
     def __call__(self, r: np.ndarray) -> np.ndarray:
         if self.factor is None:
@@ -204,13 +228,13 @@ class Weights:
         return solve_triangular(self.factor, r, lower=True, check_finite=False)
 
 
-def effective_u(model: ForwardModel, theta: np.ndarray, scatter: float = 0.0) -> np.ndarray:
-    """sqrt(u^2 + (df/dl u_l)^2 + scatter^2) per point [units of y]."""
+def regressor_variance(model: ForwardModel, theta: np.ndarray) -> np.ndarray:
+    """(df/dl u_l)^2 per point [units of y^2]: the measured rolling point's error carried to y."""
     obs = model.obs
     if not np.any(obs.u_l > 0):
-        return np.hypot(obs.u, scatter)
+        return np.zeros(obs.size)
     slope = (model.predict(theta, dl=DL_STEP) - model.predict(theta, dl=-DL_STEP)) / (2 * DL_STEP)
-    return np.sqrt(obs.u**2 + (slope * obs.u_l) ** 2 + scatter**2)
+    return (slope * obs.u_l) ** 2
 
 
 def estimate_scatter(model: ForwardModel, theta: np.ndarray, dof: int) -> float:
@@ -220,17 +244,14 @@ def estimate_scatter(model: ForwardModel, theta: np.ndarray, dof: int) -> float:
     drift when u is all calibration): the usual Birge-type estimate, applied to the independent
     part only, so that the common calibration error keeps its stated size.
     """
-    residual = model.obs.y - model.predict(theta)
-    u_eff = effective_u(model, theta)
-    common = model.obs.common_cov
 
     def excess(log_s: float) -> float:
-        return float(np.sum(Weights(np.sqrt(u_eff**2 + np.exp(2 * log_s)), common)(residual) ** 2)) - dof
+        return float(np.sum(Objective(model, float(np.exp(log_s))).residual(theta) ** 2)) - dof
 
-    lo = np.log(1e-6 * float(np.median(u_eff)))
+    lo = np.log(1e-6 * float(np.median(model.obs.u)))
     if dof <= 0 or excess(lo) <= 0:
         return 0.0
-    hi = np.log(10.0 * float(np.max(np.abs(residual))) + 1e-300)
+    hi = np.log(10.0 * float(np.max(np.abs(model.obs.y - model.predict(theta)))) + 1e-300)
     return float(np.exp(brentq(excess, lo, hi, xtol=1e-3)))
 
 

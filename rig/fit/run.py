@@ -89,7 +89,7 @@ def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=Non
     fixed = {}
     if not any(p.name == "mu" for p in free) and obs.mu_dependent:
         fixed["mu"] = obs.stand.params.mu
-    scatter = None if obs.common_cov is not None else 0.0  # run data: u states the calibration only
+    scatter = None if obs.common is not None else 0.0  # run data: u states the calibration only
     if obs.stand is not None and polish == "auto":
         polish = "check"  # the stand's table is the law the twin simulates with: direct solves are not closer
     models = rank_models(obs, free, fixed, starts, profile=profile, polish=polish, scatter=scatter)

@@ -18,7 +18,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from rig.fit.data import _drift_covariance
+from rig.fit.common_errors import drift_covariance
 from rig.logbook import Quantity
 from rig.reduction import stand_a
 from rig.reduction.geometry import StandAGeometry
@@ -72,12 +72,12 @@ def test_fit_covariance_between_points_is_the_random_walk_min_structure():
     readings = pd.DataFrame({"dynamometer_gain": GAIN, "dynamometer_drift_variance_rate_V2_s": D**2,
                              "dynamometer_zero_age_s": age})
     cal = pd.DataFrame({"dynamometer_10_sensitivity_V_N": np.full(4, 0.4)})
-    cov, note = _drift_covariance(readings, cal, f_n, [G] * 4)
+    cov, note = drift_covariance(readings, cal, f_n, [G] * 4)
     b = G.dynamometer_lever / G.yoke_lever / (0.4 * f_n)  # d(F_y/F_N)/d(zero) [1/V]
     for i in range(4):
         for j in range(4):
             assert cov[i, j] == pytest.approx((GAIN * D) ** 2 * min(age[i], age[j]) * b[i] * b[j], rel=1e-12)
     assert "min(t_i, t_j)" in note
     off = readings.assign(dynamometer_drift_variance_rate_V2_s=0.0)
-    assert _drift_covariance(off, cal, f_n, [G] * 4)[0] is None
-    assert _drift_covariance(readings.drop(columns="dynamometer_zero_age_s"), cal, f_n, [G] * 4)[0] is None
+    assert drift_covariance(off, cal, f_n, [G] * 4)[0] is None
+    assert drift_covariance(readings.drop(columns="dynamometer_zero_age_s"), cal, f_n, [G] * 4)[0] is None

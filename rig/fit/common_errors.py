@@ -1,0 +1,116 @@
+"""Errors a stand-A run shares between its points: the dynamometer's one calibration and its zero drift.
+
+y = F_y/F_N = (s - s0)/S (lever_dyn/R_v)/F_N (eq. 33) at every point of a run is converted with
+the same calibration record (sensitivity S, offset s0, their covariance) and reads a zero that
+walks away from the calibrated one (an input-referred random walk, amplified g times). Both
+errors are common to the points, so the fit needs their covariance (docs/fit.md, Estimate):
+
+    cov(y) = a a^T u_S^2 + b b^T u_s0^2 + (a b^T + b a^T) cov(S, s0) + g^2 D^2 min(t_i, t_j) b b^T
+    a = dy/dS = -y/S,  b = dy/ds0 = -(lever_dyn/R_v)/(S F_N),
+
+with t the zero's age at each point. The sensitivity's part a is proportional to y itself, and
+it is taken at the y the *model* predicts, never at the measured y: a relative error built from
+the measured values gives every point that happens to read low a smaller u, and the fit follows
+them (Peelle's pertinent puzzle; measured on stand-A recovery runs: mu 0.14 % low). With a at the
+model's y, r^T V^-1 r equals the chi2 of fitting the calibration's error as a nuisance parameter
+with its Gaussian penalty (Woodbury's identity; D'Agostini's remedy), which is unbiased.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from rig.errors import ParameterError
+
+CAL = "dynamometer_10_"
+CALIBRATION_COLUMNS = ("sensitivity_V_N", "u_sensitivity_V_N", "u_offset_V", "cov_sensitivity_offset_V2_N")
+DRIFT_COLUMNS = ("dynamometer_gain", "dynamometer_drift_variance_rate_V2_s", "dynamometer_zero_age_s")
+
+
+@dataclass(frozen=True, eq=False)
+class CommonErrors:
+    """The covariance of y [1] shared between a run's points, as a function of the model's y.
+
+    sensitivity S [V/N], u_sensitivity [V/N], u_offset [V], cov_sensitivity_offset [V^2/N]: the
+    calibration record (sensitivity None: no calibration part); offset_slope: b = dy/ds0 [1/V]
+    per point; fixed: (N, N) part that does not depend on y (the zero drift) or None.
+    """
+
+    sensitivity: float | None
+    u_sensitivity: float
+    u_offset: float
+    cov_sensitivity_offset: float
+    offset_slope: np.ndarray
+    fixed: np.ndarray | None
+
+    def covariance(self, y: np.ndarray | None) -> np.ndarray:
+        """(N, N) covariance [1] with the sensitivity's part at the values y (the true y's estimate);
+        y None: without the sensitivity's part (the offset and the drift only)."""
+        b = self.offset_slope
+        out = np.zeros((b.size, b.size)) if self.fixed is None else self.fixed.copy()
+        if self.sensitivity is None:
+            return out
+        out += np.outer(b, b) * self.u_offset**2
+        if y is not None:
+            a = -np.asarray(y, dtype=float) / self.sensitivity
+            cross = np.outer(a, b)
+            out += np.outer(a, a) * self.u_sensitivity**2 + (cross + cross.T) * self.cov_sensitivity_offset
+        return out
+
+
+def read_common_errors(cal: pd.DataFrame, readings: pd.DataFrame, f_n: np.ndarray,
+                       geometries) -> tuple[CommonErrors | None, list[str]]:
+    """The run's common errors from its calibration records and readings (one row per fitted point),
+    the points' F_N [N] and geometries; with one note per part for the summary."""
+    lever = np.array([g.dynamometer_lever / g.yoke_lever for g in geometries])
+    notes = []
+    calibration = None
+    if any(CAL + c not in cal.columns for c in CALIBRATION_COLUMNS):
+        notes.append("no dynamometer calibration record in the log: errors treated as independent")
+    else:
+        values = cal[[CAL + c for c in CALIBRATION_COLUMNS]].to_numpy(dtype=float)
+        if np.allclose(values, values[0], rtol=0, atol=0):
+            calibration = values[0]
+            notes.append(f"dynamometer calibration common to all points (u(S)/S = {values[0, 1] / values[0, 0]:.2%}, "
+                         f"u(s0) = {values[0, 2]:.3g} V): generalised least squares with its covariance, the "
+                         "sensitivity's part at the model's F_y")
+        else:
+            notes.append("dynamometer calibrated more than once: calibration errors treated as independent")
+    drift, note = drift_covariance(readings, cal, f_n, geometries)
+    notes.append(note)
+    if calibration is None and drift is None:
+        return None, notes
+    if calibration is None:
+        return CommonErrors(None, 0.0, 0.0, 0.0, np.zeros(f_n.size), drift), notes
+    sensitivity, u_sensitivity, u_offset, cov_so = map(float, calibration)
+    return CommonErrors(sensitivity, u_sensitivity, u_offset, cov_so, -lever / (sensitivity * f_n), drift), notes
+
+
+def drift_covariance(readings: pd.DataFrame, cal: pd.DataFrame, f_n: np.ndarray, geometries) -> tuple:
+    """Covariance of y = F_y/F_N from the dynamometer's zero drift since the calibration took the zero.
+
+    The zero walks as an input-referred random walk (sensors.noise.RandomWalkDrift) amplified g
+    times: cov(z_i, z_j) = g^2 D^2 min(t_i, t_j) [V^2] with t the zero's age at each point (the
+    log's readings, rig.stands.yoke.instruments.zero_drift_readings); dy/dz = -(lever_dyn/R_v)/(S F_N)
+    (eq. 33). Its diagonal is the reduction's ``dyn_zero_drift_V`` term, already inside u(F_y).
+    """
+    if any(c not in readings.columns for c in DRIFT_COLUMNS) or CAL + "sensitivity_V_N" not in cal.columns:
+        return None, ("the log does not record dynamometer 10's zero drift: no covariance between points "
+                      "beyond the calibration's")
+    gain, rate, age = (readings[c].to_numpy(dtype=float) for c in DRIFT_COLUMNS)
+    if not (np.allclose(gain, gain[0], rtol=0, atol=0) and np.allclose(rate, rate[0], rtol=0, atol=0)):
+        raise ParameterError("dynamometer drift readings", f"gain {sorted(set(gain))}, rate {sorted(set(rate))}",
+                             "one gain and one drift variance rate per run")
+    if rate[0] == 0.0:
+        return None, "dynamometer 10's zero drift is off in this log: no covariance between points from it"
+    sens = cal[CAL + "sensitivity_V_N"].to_numpy(dtype=float)
+    b = np.array([g.dynamometer_lever / g.yoke_lever for g in geometries]) / (sens * f_n)
+    cov = gain[0] ** 2 * rate[0] * np.minimum.outer(age, age) * np.outer(b, b)
+    return cov, (f"dynamometer 10's zero drift since the calibration (random walk, g D = "
+                 f"{gain[0] * math.sqrt(rate[0]):.3g} V/s^0.5): covariance g^2 D^2 min(t_i, t_j) between "
+                 f"points (t = {age.min():.0f}-{age.max():.0f} s after the zero) added to the generalised "
+                 "least squares")
