@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from scipy.optimize import least_squares
 
+from rig.fit import engine
 from rig.fit.common_errors import CommonErrors
 from rig.fit.engine import DELTA_CHI2_95, fit
 from rig.fit.parameters import FitParameter
@@ -138,3 +140,33 @@ def test_errors_in_the_regressor_give_demings_line_not_an_attenuated_slope():
     assert abs(ols - slope) > 0.02  # the two answers differ by far more than the tolerance below
     assert result.estimate("b").value == pytest.approx(slope, abs=1e-6)
     assert result.estimate("a").value == pytest.approx(intercept, abs=1e-6)
+
+
+def test_a_run_out_of_evaluations_goes_on_once_from_where_it_stopped(monkeypatch):
+    """The first attempt is cut to 3 evaluations (status 0: budget used up while descending); the
+    retry starts from its end point with RETRY_NFEV_PER_PARAMETER per parameter and reaches the
+    closed-form WLS answer. A retry that runs out too is a named FitConvergenceError."""
+    basis, y, u = _data(8)
+    w = 1.0 / u
+    theta, *_ = np.linalg.lstsq(basis * w[:, None], y * w, rcond=None)
+    calls = []
+
+    def cut_first(fun, x0, **kwargs):
+        if not calls:
+            kwargs["max_nfev"] = 3
+        calls.append((np.array(x0), kwargs["max_nfev"]))
+        res = least_squares(fun, x0, **kwargs)
+        calls[-1] += (res.status, res.x)
+        return res
+
+    monkeypatch.setattr(engine, "least_squares", cut_first)
+    result = fit(LinearModel(basis, y, u), [0.0, 0.0], polish="never", profile=False)
+    (start_1, budget_1, status_1, end_1), (start_2, budget_2, _, _) = calls[:2]
+    assert (budget_1, status_1) == (3, 0) and budget_2 == engine.RETRY_NFEV_PER_PARAMETER * 2
+    assert np.array_equal(start_2, end_1) and not np.array_equal(end_1, start_1)
+    assert [e.value for e in result.estimates] == pytest.approx(theta, abs=1e-7)
+
+    calls.clear()
+    monkeypatch.setattr(engine, "RETRY_NFEV_PER_PARAMETER", 1)  # the retry runs out as well
+    with pytest.raises(engine.FitConvergenceError, match="fit line did not converge"):
+        fit(LinearModel(basis, y, u), [0.0, 0.0], polish="never", profile=False, label="line")
