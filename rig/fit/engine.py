@@ -1,15 +1,15 @@
 """Weighted least squares with effective variance, profile-likelihood intervals, correlations.
 
-chi2(theta) = r^T V(theta)^-1 r, r = y - f(theta), V = diag(u_eff^2) + C(f(theta)): u_eff^2 =
-u_i^2 + (df/dl u_l)^2 + s^2 with u_i the independent part of the stated u, and C the covariance
-of errors shared between points (a calibration, a zero drift; rig.fit.common_errors), its
-sensitivity's part at the model's values f(theta), not the measured y. The rolling point l/a is
+chi2(theta) = r^T V(theta)^-1 r, r = y - f(theta), V = diag(u_eff^2) + C: u_eff^2 = u_i^2 +
+(df/dl u_l)^2 + s^2 with u_i the independent part of the stated u, and C the covariance of errors
+shared between points (a calibration, a zero drift; rig.fit.common_errors), its calibration's
+relative part at the values the points are adjusted to (Objective.weights). The rolling point l/a is
 itself measured: minimising over the true l/a of every point (orthogonal distance regression)
 with f linearised in l gives exactly this chi2 with df/dl taken *at theta* (Orear's effective
 variance; Deming's regression for a straight line). df/dl therefore moves with theta inside the
 minimisation: held fixed, the weights do not see that a larger slope also spreads the data, and
 the estimate is attenuated like a least-squares slope on a noisy regressor (measured on stand-A
-runs: mu 0.14 % low, docs/fit.md). The residuals are whitened with the Cholesky factor of
+runs: mu 0.13 % low, docs/fit.md). The residuals are whitened with the Cholesky factor of
 V(theta) and minimised with scipy.optimize.least_squares (trust-region reflective, bounds = the
 ranges).
 
