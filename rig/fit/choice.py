@@ -97,9 +97,9 @@ def rank_models(obs: Observations, free: Sequence[FitParameter], fixed: Mapping[
 def _nothing_free(model: ForwardModel, scatter: float) -> FitResult:
     obs = model.obs
     theta = np.empty(0)
-    objective = Objective(model, scatter)
     prediction = model.predict(theta)
-    chi2 = float(np.sum(objective.residual(theta) ** 2))
+    weights = Objective(model, scatter).weights(theta, prediction)
+    chi2 = float(np.sum(weights(obs.y - prediction) ** 2))
     return FitResult(names=(), estimates=(), correlation=np.zeros((0, 0)), chi2=chi2, n_points=obs.size,
-                     prediction=prediction, band=np.zeros(obs.size), u_eff=objective.weights(theta).u_total, warnings=(),
+                     prediction=prediction, band=np.zeros(obs.size), u_eff=weights.u_total, warnings=(),
                      evaluations=1, message="no free parameter", scatter=scatter)
