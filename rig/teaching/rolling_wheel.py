@@ -86,7 +86,7 @@ def pulled_wheel(wheel: Wheel, pull: float, vertical_load: float, f_v: float, mu
     m, j, r = wheel.mass_kg, wheel.inertia_kg_m2, wheel.radius_m
     a = (force - f_v * normal) / wheel.effective_mass_kg
     t = j * a / r**2 + f_v * normal
-    if abs(t) <= mu_s * normal:
+    if abs(t) <= mu_s * normal * (1 + 1e-12):  # at max_rolling_pull t = mu_s N only to rounding: it rolls
         return WheelMotion(a, a / r, t, normal, True)
     t = math.copysign(mu_k * normal, t)  # the contact slips the way the required T pointed
     return WheelMotion((force - t) / m, (t - f_v * normal) * r / j, t, normal, False)
