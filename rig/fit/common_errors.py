@@ -37,7 +37,7 @@ DRIFT_COLUMNS = ("dynamometer_gain", "dynamometer_drift_variance_rate_V2_s", "dy
 
 @dataclass(frozen=True, eq=False)
 class CommonErrors:
-    """The covariance of y [1] shared between a run's points, as a function of the model's y.
+    """The covariance of y [1] shared between a run's points, as a function of the true y's estimate.
 
     sensitivity S [V/N], u_sensitivity [V/N], u_offset [V], cov_sensitivity_offset [V^2/N]: the
     calibration record (sensitivity None: no calibration part); offset_slope: b = dy/ds0 [1/V]
@@ -81,7 +81,7 @@ def read_common_errors(cal: pd.DataFrame, readings: pd.DataFrame, f_n: np.ndarra
             calibration = values[0]
             notes.append(f"dynamometer calibration common to all points (u(S)/S = {values[0, 1] / values[0, 0]:.2%}, "
                          f"u(s0) = {values[0, 2]:.3g} V): generalised least squares with its covariance, the "
-                         "sensitivity's part at the model's F_y")
+                         "sensitivity's part at the fitted F_y")
         else:
             notes.append("dynamometer calibrated more than once: calibration errors treated as independent")
     drift, note = drift_covariance(readings, cal, f_n, geometries)

@@ -162,9 +162,9 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
     band = np.sqrt(np.clip(np.einsum("ij,jk,ik->i", slopes, cov, slopes), 0, None))
     return FitResult(
         names=tuple(p.name for p in free), estimates=estimates, correlation=corr, chi2=chi2, n_points=obs.size,
-        prediction=(model.direct if polished else predict)(res.x), band=band, u_eff=weights.u_total, warnings=tuple(warnings),
-        evaluations=model.evaluations, message=str(res.message), table_error=table_error, polished=polished,
-        scatter=s,
+        prediction=(model.direct if polished else predict)(res.x), band=band, u_eff=weights.u_total,
+        warnings=tuple(warnings), evaluations=model.evaluations, message=str(res.message), table_error=table_error,
+        polished=polished, scatter=s,
     )
 
 
