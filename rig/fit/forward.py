@@ -1,19 +1,20 @@
 """The forward model of a fit: predicted y at every data point for given parameter values.
 
 Cost (docs/fit.md): the contact coefficients (nu_T, nu_v, nu_0) are evaluated at *nodes* of the
-free effect parameters (17 equally spaced per parameter's range) and interpolated between them
-by cubic Hermite pieces with central-difference slopes (Catmull-Rom; C1), so that a value needs
-only the 4 nodes around it (4^d for d free effects). The coefficients are not smooth in the
-effects' parameters (at fig10's states nu_v stays flat in Psi up to a threshold and then bends:
-stick cells turn to slip one by one), so the nodes must be close: interpolation error against
-the table at the exact Psi, fig10's 24 states, Psi 1-3: at most 1.1e-4 with 5 nodes and a global
-spline (as before), 1.6e-5 with 17 (median 1.5e-6; a global spline on 17 nodes is as close and
-costs 17 node evaluations); and
+free effect parameters (17 equally spaced over each parameter's range)
 * for stand data (alpha' = mu K depends on mu) from the stand's own cached surrogate tables
   (rig.contact.surrogate over l/a, c/a, log alpha'; one table per b/a and node, built once and
   then loaded from the cache), so a model evaluation costs milliseconds;
 * for a digitised contact curve (alpha' fixed by the data) by direct solves at the points, once
-  per node (memoised).
+  per node (memoised);
+and interpolated between them by cubic Hermite pieces with central-difference slopes
+(Catmull-Rom; C1), so that a value needs only the 4 nodes around it (4^d for d free effects).
+The coefficients are not smooth in an effect's parameter (at fig10's states nu_v stays flat in
+Psi up to a threshold and then bends: the grid's cells turn from slip to stick one at a time; at
+b/a = 2, alpha' = 1.15, l/a = 0.5, n = 16 none sticks up to Psi = 1.5, one of 256 from 1.55, two
+at 2), so the nodes must be close. Interpolation error against the table at the exact Psi (fig10's 24 states, Psi 1-3): at
+most 1.1e-4 with 5 nodes and a global spline (before 2026-11-27), 1.6e-5 with 17 (median 1.5e-6;
+a global spline through 17 nodes is as close and costs 17 node evaluations a value).
 :meth:`ForwardModel.direct` evaluates the same prediction by direct solves at the exact
 parameter values; the fit reports table-vs-direct at the optimum and polishes with it when that
 difference is not small against the data's u.

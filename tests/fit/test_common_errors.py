@@ -8,7 +8,7 @@ leaves it at 0, so the estimate is the one without it:
   each and a 20 % common normalisation error): the weighted mean of the independent errors, 1.1538;
   the covariance built from the *measured* values gives 0.882, below both (Peelle 1987);
 * a straight line with errors in x and y: Deming's closed form (tests/fit/test_engine.py); built
-  from the model at the measured x, or from the measured y, the line moves by 20 % or 5 %.
+  from the model at the measured x, or from the measured y, the slope moves by 23 % or 5 %.
 """
 
 from __future__ import annotations
