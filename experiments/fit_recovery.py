@@ -39,7 +39,7 @@ def scene_text(*, mu: float, psi: float, seed: int, points: int, gate_s: float, 
     for pattern, new in (
         (r"(?m)^mu = [0-9.]+", f"{radius}mu = {mu!r}"),
         (r"(?m)^seed = [0-9]+", f"seed = {seed}"),
-        (r"(?m)^n = 16 ", f"n = {n} "),
+        (r"(?m)^n = [0-9]+ ", f"n = {n} "),
         (r"(?m)^table_points = \[21, 3, 5\]", f"table_points = [{', '.join(map(str, table_points))}]{effects}"),
         (r"(?m)^gate_time_s = [0-9.]+", f"gate_time_s = {gate_s!r}"),
         (r"num = 24", f"num = {points}"),

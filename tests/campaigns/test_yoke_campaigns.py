@@ -26,7 +26,7 @@ from rig.runner import run_scene
 from rig.scenes import load_scene, parse_scene
 
 SHORT = {  # the 385 N set-points put l/a inside the 96.2 N span (l/a ~ 0.63 T_set and 0.19 T_set per N m)
-    "n = 16 ": "n = 8 ",
+    "n = 32 ": "n = 8 ",
     "table_points = [21, 3, 5]": "table_points = [9, 2, 3]",
     "{ start = 0.1, stop = 1.6, num = 24 }": "[0.3, 0.9, 1.5]",  # brake only (T_set = 0 would make mu_T 0/D)
     "gate_time_s = 20.0 ": "gate_time_s = 2.0 ",
