@@ -18,7 +18,9 @@ tests/contact/data/contact_fortran_pure_spin.toml), and the growth of the time f
 
 Part 3 (solver work): issue 9's time goal (<= 10 ms per partial-slip solve for the circle, <= 30 ms
 for b/a = 0.1 and 10 at the default n = 32) on ten partial-slip states: median wall and CPU time, Newton
-steps and GMRES products (the counts are load-independent).
+steps and GMRES products (the counts are load-independent). ``--work-only`` prints this part alone,
+e.g. for a baseline from another checkout in the same session: ``PYTHONPATH=OLD python
+benchmarks/bench_contact.py --work-only``.
 
 Part 4 (against the established program): CONTACT's pure-spin runs at alpha' = 20.5 from the committed
 table (tests/contact/data/contact_fortran_pure_spin.csv: CPU seconds of its own build, measured in the
@@ -129,7 +131,18 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--markdown", type=Path, help="also write the tables to this markdown file")
+    parser.add_argument("--work-only", action="store_true",
+                        help="part 3 alone (e.g. for another checkout: PYTHONPATH=OTHER python benchmarks/bench_contact.py --work-only)")
     args = parser.parse_args()
+    table3 = "\n".join(
+        ["| b/a | alpha' | c/a, l/a | median wall ms | median CPU ms | Newton steps | GMRES products |",
+         "|---|---|---|---|---|---|---|"]
+        + [f"| {b:g} | {a:g} | {c:g}, {l:g} | {w:.1f} | {cpu:.1f} | {newton} | {krylov} |"
+           for b, a, c, l, w, cpu, newton, krylov in solver_work(args.repeats)]
+    )
+    if args.work_only:
+        print(table3)
+        return 0
     rows = ladder(args.repeats)
     table1 = "\n".join(
         ["| model | n | median time per solve [ms] | ratio to rigid n=32 | max error vs n=128 |", "|---|---|---|---|---|"]
@@ -144,12 +157,6 @@ def main() -> int:
         + [f"| {b:g} | {n}{' (default)' if n == DEFAULT_N else ''} | {dv:.4f} | {d0:.4f} | {t:.1f} | {t / at_default[b]:.2f} "
            f"| {rv:.4f}, {r0:.4f} | {_signed(ev)} {_signed(e0)} |"
            for b, n, dv, d0, t, rv, r0, ev, e0 in study]
-    )
-    table3 = "\n".join(
-        ["| b/a | alpha' | c/a, l/a | median wall ms | median CPU ms | Newton steps | GMRES products |",
-         "|---|---|---|---|---|---|---|"]
-        + [f"| {b:g} | {a:g} | {c:g}, {l:g} | {w:.1f} | {cpu:.1f} | {newton} | {krylov} |"
-           for b, a, c, l, w, cpu, newton, krylov in solver_work(args.repeats)]
     )
     table4 = "\n".join(
         ["| program | cells across 2a | d nu_v | d nu_0 | ms per solve |", "|---|---|---|---|---|"]
