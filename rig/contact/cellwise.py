@@ -59,14 +59,6 @@ def place(t, ix, iy, field):
 
 
 @_compiled
-def take(source, ix, iy, t):
-    """t (2, N) = the cells' values of the grid ``source`` (2, >= nx, >= ny)."""
-    for c in range(t.shape[1]):
-        t[0, c] = source[0, ix[c], iy[c]]
-        t[1, c] = source[1, ix[c], iy[c]]
-
-
-@_compiled
 def blend(source, ix, iy, share, w, scale, t):
     """t_c = share_c source_c + (I - share_c) w_c scale: source (2, >= nx, >= ny) on the grid,
     share (3, N) symmetric, w and t (2, N)."""
@@ -78,17 +70,22 @@ def blend(source, ix, iy, share, w, scale, t):
 
 
 @_compiled
+def _transported_at(u, i, j, transport, c):
+    """(x, y) of sum_k transport[k, c] u[:, i - k, j]: the displacement carried into cell c's slip."""
+    s0 = 0.0
+    s1 = 0.0
+    for k in range(transport.shape[0]):
+        s0 += transport[k, c] * u[0, i - k, j]
+        s1 += transport[k, c] * u[1, i - k, j]
+    return s0, s1
+
+
+@_compiled
 def transported(u, ix, iy, transport, out):
     """out_c = sum_k transport[k, c] u[:, ix - k, iy]: the displacement carried into each cell's slip
     (u (2, >= nx, >= ny) on the grid, transport (K, N), out (2, N))."""
     for c in range(out.shape[1]):
-        s0 = 0.0
-        s1 = 0.0
-        for k in range(transport.shape[0]):
-            s0 += transport[k, c] * u[0, ix[c] - k, iy[c]]
-            s1 += transport[k, c] * u[1, ix[c] - k, iy[c]]
-        out[0, c] = s0
-        out[1, c] = s1
+        out[0, c], out[1, c] = _transported_at(u, ix[c], iy[c], transport, c)
 
 
 @_compiled
@@ -111,13 +108,7 @@ def linearised_law(u, ix, iy, transport, t, local, slip_gain, out):
     the cell (k = 0) and k cells upstream; t (2, N); local (3, N) A_c; slip_gain (3, N) B_c; out (2, N).
     """
     for c in range(t.shape[1]):
-        i = ix[c]
-        j = iy[c]
-        s0 = 0.0
-        s1 = 0.0
-        for k in range(transport.shape[0]):
-            s0 += transport[k, c] * u[0, i - k, j]
-            s1 += transport[k, c] * u[1, i - k, j]
+        s0, s1 = _transported_at(u, ix[c], iy[c], transport, c)
         out[0, c] = local[0, c] * t[0, c] + local[1, c] * t[1, c] + slip_gain[0, c] * s0 + slip_gain[1, c] * s1
         out[1, c] = local[1, c] * t[0, c] + local[2, c] * t[1, c] + slip_gain[1, c] * s0 + slip_gain[2, c] * s1
 
