@@ -39,7 +39,8 @@ DEFAULT_N = 32
 # 5: the kinematic solver's third pass (rig.contact.newton, elastic_law): Newton tolerance 1e-6, values move <= 1e-7.
 # 6: a grid cell's pressure is the load of the contact nearest its centre (the rim's cut cells no longer drop theirs).
 # 7: each row's first cell carries its traction with the leading edge's sqrt profile, the second its own step (rig.contact.entry).
-DISCRETISATION_REVISION = 7
+# 8: every cell the contact reaches shares out its load (a sliver thinner than a sub-cell no longer lost it), sub-cells exact across x.
+DISCRETISATION_REVISION = 8
 N_RANGE = (4, 512)
 # Effects each model can represent; the others would be silently meaningless, so they are errors.
 # The pressure-dependent mu changes only the traction bound, so every model with one has it; linear
