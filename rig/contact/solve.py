@@ -40,7 +40,8 @@ DEFAULT_N = 32
 # 6: a grid cell's pressure is the load of the contact nearest its centre (the rim's cut cells no longer drop theirs).
 # 7: each row's first cell carries its traction with the leading edge's sqrt profile, the second its own step (rig.contact.entry).
 # 8: every cell the contact reaches shares out its load (a sliver thinner than a sub-cell no longer lost it), sub-cells exact across x.
-DISCRETISATION_REVISION = 8
+# 9: a narrow contact (b/a < 0.15) gets more rows than n, up to 2n (rig.contact.grid.rows_across).
+DISCRETISATION_REVISION = 9
 N_RANGE = (4, 512)
 # Effects each model can represent; the others would be silently meaningless, so they are errors.
 # The pressure-dependent mu changes only the traction bound, so every model with one has it; linear

@@ -4,7 +4,7 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from rig.contact.grid import load_factor, make_grid
+from rig.contact.grid import load_factor, make_grid, rows_across
 
 B_OVER_A = st.floats(0.1, 10.0)
 N = st.integers(8, 64)
@@ -30,3 +30,11 @@ def test_the_loads_are_as_symmetric_as_the_contact(b, n):
     grid = make_grid("ellipse", b, n)
     np.testing.assert_allclose(grid.p, grid.p[:, ::-1], rtol=0, atol=1e-12)
     np.testing.assert_array_equal(grid.active, grid.active[:, ::-1])
+
+
+def test_narrow_contacts_get_more_rows_up_to_twice_n():
+    """rows_across: n for b/a >= 0.15, n 0.15/(b/a) below, at most 2n; columns are unaffected."""
+    assert [rows_across(32, b) for b in (10.0, 1.0, 0.15, 0.12, 0.1, 0.075, 0.01)] == [32, 32, 32, 40, 48, 64, 64]
+    grid = make_grid("ellipse", 0.1, 32)
+    assert (grid.n, grid.nx, grid.ny) == (32, 32, 48)
+    assert np.isclose(grid.hy, 2.0 / 48) and np.isclose(grid.y[-1], -grid.y[0])

@@ -174,9 +174,9 @@ def _start(grid: Grid, poisson: float, creepage: Creepage, effects: ContactEffec
     grids FASTSIM. The start changes the cost, not the answer. (Measured with the first-order
     transport, pure spin, alpha' = 20.5, n = 128: 5 Newton steps instead of 24; with today's
     transport the same state takes 18.)"""
-    if grid.ny < NESTED_START_N:
+    if grid.n < NESTED_START_N:
         return _fastsim_start(grid, poisson, creepage, r)
-    coarse = make_grid(grid.shape, grid.b_over_a, grid.ny // 2)
+    coarse = make_grid(grid.shape, grid.b_over_a, grid.n // 2)
     t_coarse = coarse.scatter(solve_grid(coarse, poisson, creepage, effects).q)
     xc, yc = grid.centres()
     i = np.clip(np.floor((xc - coarse.x[0]) / coarse.hx + 0.5).astype(int), 0, coarse.x.size - 1)
