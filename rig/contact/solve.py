@@ -6,7 +6,8 @@
     r.nu_T, r.nu_v, r.nu_0, r.stick_fraction
 
 alpha is alpha' of eq. (21) (0 = rigid sliding, inf = no slip); (c/a, l/a) is the rolling point;
-poisson is the (combined) Poisson ratio of the pair; n = cells across 2a for the grid models.
+poisson is the (combined) Poisson ratio of the pair; n = cells across 2a for the grid models (more
+rows for a narrow contact, b/a < 0.15: rig.contact.grid.rows_across).
 ``solve_creepage`` states the same problem in creepages, which also covers zero spin (hard case 1).
 Effects are keyword arguments (see rig.contact.effects); an effect not named is not built.
 """
@@ -70,7 +71,7 @@ def solve(
 
     alpha: track deformability alpha' of eq. (21) [1], >= 0 (inf allowed); c_over_a, l_over_a:
     rolling point [units of a]; poisson: Poisson ratio [1] in [0, 0.5]; n: cells across 2a
-    (default 32); effects: psi, static_ratio, inertia_number, rolling_length, pressure_exponent
+    (default 32; more rows when b/a < 0.15, rig.contact.grid.rows_across); effects: psi, static_ratio, inertia_number, rolling_length, pressure_exponent
     (kinematic model; MODEL_EFFECTS lists what the others support). With pressure_exponent the
     friction coefficient of the units (nu = F/(mu F_N), alpha') is mu(p0), at the peak pressure.
     """
