@@ -72,8 +72,9 @@ def solve(
     alpha: track deformability alpha' of eq. (21) [1], >= 0 (inf allowed); c_over_a, l_over_a:
     rolling point [units of a]; poisson: Poisson ratio [1] in [0, 0.5]; n: cells across 2a
     (default 32; more rows when b/a < 0.15, rig.contact.grid.rows_across); effects: psi,
-    static_ratio, inertia_number, rolling_length, pressure_exponent (kinematic model; MODEL_EFFECTS lists what the others support). With pressure_exponent the
-    friction coefficient of the units (nu = F/(mu F_N), alpha') is mu(p0), at the peak pressure.
+    static_ratio, inertia_number, rolling_length, pressure_exponent (kinematic model; MODEL_EFFECTS
+    lists what the others support). With pressure_exponent the friction coefficient of the units
+    (nu = F/(mu F_N), alpha') is mu(p0), at the peak pressure.
     """
     alpha = validate.number("alpha", alpha, 0.0, allow_inf=True)
     c = validate.number("c_over_a", c_over_a)
