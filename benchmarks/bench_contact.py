@@ -179,7 +179,7 @@ def main() -> int:
             "ellipses b/a = 0.1 and 10; errors against the solver's converged value (Richardson's\n"
             "extrapolation of n = 64 and 128 with the order observed on 32/64/128, limited to 1-2), and for the circle also\n"
             "against Kalker's exact theory converged (CONTACT's limit 0.4518 +- 0.0004, 0.2623 +- 0.001;\n"
-            "docs/contact-model.md, convergence study). The time column's ratio is issue 9's growth\n"
+            "docs/contact-convergence.md). The time column's ratio is issue 9's growth\n"
             "goal (<= 25x from n = 32 to 128).\n\n"
             + table2 + "\n\n"
             "## Solver work at the default grid\n\n"

@@ -7,7 +7,7 @@ States: b/a in (0.1, 1, 10) x alpha' in (0.1, 1, 10, 100, 1e4) x rolling point C
 ((0, 0), (0.5, 0.5), (-1, 1)). The converged value is Richardson's extrapolation of n = 64 and 128
 with the order observed on n = 32 / 64 / 128, limited to 1 ... 2: a second-order extrapolation is
 wrong where the model converges more slowly (the spin pole in full sliding at b/a = 0.1, the
-stick/slip boundary: docs/contact-model.md, "Convergence study"). The reference's uncertainty is
+stick/slip boundary: docs/contact-convergence.md). The reference's uncertainty is
 the spread of the extrapolations with orders 1 and 2; a state passes when its error plus that
 uncertainty is within the goal. Prints the largest |d nu_v| and |d nu_0| per grid and b/a, where it
 occurs, and the reference's uncertainty there. Accuracy only (no timing): contended machines give

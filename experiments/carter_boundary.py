@@ -8,7 +8,7 @@ the square root of the distance. This script discretises it as the 3-D model doe
 cell loads by the Voronoi rule, exact cell integrals of the influence at the centres, the
 second-order upwind difference of the displacement, the leading edge's two sub-cell corrections
 (rig.contact.entry), the Coulomb law per cell by semi-smooth Newton - and measures the force error
-against the closed form (docs/contact-model.md, "Where the rest of the error is"):
+against the closed form (docs/contact-convergence.md, "Where the rest of the error is"):
 
     python experiments/carter_boundary.py orders [--w 0.5] [--profiled K] [--tilted] [--hertz] [--grids 16 32 ...]
     python experiments/carter_boundary.py where [--w 0.5] [--profiled K] [--grids 64 128 ...]

@@ -16,7 +16,7 @@ column by column from its products (2N of them: n <= 64). Classes: the stick/sli
 within 2 cells of a cell in the other state), the rest of the stick zone with every row's first
 two cells (the leading edge's near field: the stick zone starts at the leading edge here), and the
 rest of the slip zone. The finer classes near the leading edge are not reported: their residuals
-there are O(h^0.5) and their shares large and of both signs (docs/contact-model.md, "Where the rest
+there are O(h^0.5) and their shares large and of both signs (docs/contact-convergence.md, "Where the rest
 of the error is").
 """
 

@@ -1,5 +1,5 @@
 """Where the kinematic model's discretisation error comes from: the grid studies of
-docs/contact-model.md ("Convergence study"), one state at a time.
+docs/contact-convergence.md, one state at a time.
 
     python experiments/contact_convergence.py sequence B ALPHA C L [--grids 16 24 32 48 64 128]
     python experiments/contact_convergence.py shift SHAPE B ALPHA C L [--n 32]

@@ -33,7 +33,7 @@ def solved():
 
 CONVERGED_FROM = 3.0
 """Below this alpha' the reference (80 cells) is not converged itself (issue 9): there ours is held
-to its own n = 64 values, and nu_v is linear in alpha' (docs/contact-model.md, convergence study)."""
+to its own n = 64 values, and nu_v is linear in alpha' (docs/contact-convergence.md)."""
 
 
 def test_default_grid_matches_exact_theory_from_alpha_3(solved):
