@@ -17,7 +17,8 @@ within 2 cells of a cell in the other state), the rest of the stick zone with ev
 two cells (the leading edge's near field: the stick zone starts at the leading edge here), and the
 rest of the slip zone. The finer classes near the leading edge are not reported: their residuals
 there are O(h^0.5) and their shares large and of both signs (docs/contact-convergence.md, "Where the rest
-of the error is").
+of the error is"). The +-2-cell classes hand cells from one class to the next as h falls, so orders
+taken from them mislead; experiments/slip_layer.py splits by physical place (the fifth pass).
 """
 
 from __future__ import annotations
@@ -52,6 +53,37 @@ def reference_on(coarse, fine, q_fine) -> np.ndarray:
     return coarse.gather(field)
 
 
+def adjoint_split(disc, creepage, q, t_ref) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The shares (N,) of nu_v's error -phi . R by cell (x and y equations summed), the adjoint phi
+    (2, N) and the residual R (2, N) of the reference tractions t_ref (2, N) [mu p0] in the equations of
+    the discretisation ``disc`` (rig.contact.models.kinematic.Discretisation), J taken at its solution q."""
+    grid = disc.grid
+    s_g, rho, bound = disc.rigid_slip(creepage), disc.slip_scale(), grid.gather(grid.p)
+
+    def residual(t):
+        q, elastic = disc.law.apply(t)
+        z = q - rho * (s_g + elastic)
+        pz, zn, inside = project(z, bound)
+        return q - pz, z, zn, inside
+
+    _, z, zn, inside = residual(q)
+    safe = np.where(zn > 0.0, zn, 1.0)
+    linear = disc.law.linearise(z / safe, np.where(inside, 1.0, bound / safe), inside, rho)
+    size = q.size
+    unit = np.zeros(size)
+    jacobian = np.empty((size, size))
+    for k in range(size):
+        unit[k] = 1.0
+        jacobian[:, k] = linear.jacobian(unit)
+        unit[k] = 0.0
+    gradient = np.zeros(size)
+    gradient[size // 2:] = 1.0 / bound.sum()  # nu_v = sum q_y / sum p
+    phi = np.linalg.solve(jacobian.T, gradient)
+    r_ref = residual(t_ref)[0]
+    share = -phi * r_ref.ravel()
+    return share[: size // 2] + share[size // 2:], phi.reshape(2, -1), r_ref
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--n", type=int, default=32)
@@ -68,28 +100,7 @@ def main() -> None:
     load = grid.gather(grid.p).sum()
 
     disc = kinematic.Discretisation(grid, influence_operator(grid, POISSON), effects)
-    s_g, rho, bound = disc.rigid_slip(creepage), disc.slip_scale(), grid.gather(grid.p)
-
-    def residual(t):
-        q, elastic = disc.law.apply(t)
-        z = q - rho * (s_g + elastic)
-        pz, zn, inside = project(z, bound)
-        return q - pz, z, zn, inside
-
-    _, z, zn, inside = residual(solution.q)
-    safe = np.where(zn > 0.0, zn, 1.0)
-    linear = disc.law.linearise(z / safe, np.where(inside, 1.0, bound / safe), inside, rho)
-    size = solution.q.size
-    unit = np.zeros(size)
-    jacobian = np.empty((size, size))
-    for k in range(size):
-        unit[k] = 1.0
-        jacobian[:, k] = linear.jacobian(unit)
-        unit[k] = 0.0
-    gradient = np.zeros(size)
-    gradient[size // 2:] = 1.0 / load  # nu_v = sum q_y / sum p
-    share = -np.linalg.solve(jacobian.T, gradient) * residual(t_ref)[0].ravel()
-    share = grid.scatter((share[: size // 2] + share[size // 2:])[None, :])[0]
+    share = grid.scatter(adjoint_split(disc, creepage, solution.q, t_ref)[0][None, :])[0]
     nu, nu_ref = solution.q[1].sum() / load, t_ref[1].sum() / load
     print(f"b/a {args.b}, alpha' {args.alpha}: nu_v(n = {args.n}) {nu:.6f}, fine (n = {args.fine}) on the coarse "
           f"cells {nu_ref:.6f}: difference {nu - nu_ref:+.3e}, adjoint estimate {share.sum():+.3e}")

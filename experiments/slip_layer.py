@@ -59,8 +59,7 @@ from rig.contact.influence import influence_operator  # noqa: E402
 from rig.contact.integrate import coefficients  # noqa: E402
 from rig.contact.kinematics import Creepage  # noqa: E402
 from rig.contact.models import kinematic  # noqa: E402
-from rig.contact.newton import project  # noqa: E402
-from contact_attribution import reference_on  # noqa: E402
+from contact_attribution import adjoint_split, reference_on  # noqa: E402
 
 POISSON = 0.28
 ALPHA = 20.5
@@ -209,7 +208,7 @@ def use(variant: str) -> None:
 
 
 def solve(grid, variant: str):
-    """The kinematic solution on a grid; twopoint iterates its stick map to a fixed point."""
+    """The kinematic solution on a grid; twopoint and bdf3slip iterate their stick map to a fixed point."""
     iterated = variant in ("twopoint", "bdf3slip")
     use("base" if iterated else variant)
     solution = kinematic.solve_grid(grid, POISSON, CREEPAGE, EFFECTS)
@@ -261,30 +260,7 @@ def attribution(args) -> None:
     t_ref = reference_on(grid, fine, q_fine)
     load = grid.gather(grid.p).sum()
     disc = kinematic.Discretisation(grid, influence_operator(grid, POISSON), EFFECTS)
-    s_g, rho, bound = disc.rigid_slip(CREEPAGE), disc.slip_scale(), grid.gather(grid.p)
-
-    def residual(t):
-        q, elastic = disc.law.apply(t)
-        z = q - rho * (s_g + elastic)
-        pz, zn, inside = project(z, bound)
-        return q - pz, z, zn, inside
-
-    _, z, zn, inside = residual(solution.q)
-    safe = np.where(zn > 0.0, zn, 1.0)
-    linear = disc.law.linearise(z / safe, np.where(inside, 1.0, bound / safe), inside, rho)
-    size = solution.q.size
-    unit = np.zeros(size)
-    jacobian = np.empty((size, size))
-    for k in range(size):
-        unit[k] = 1.0
-        jacobian[:, k] = linear.jacobian(unit)
-        unit[k] = 0.0
-    gradient = np.zeros(size)
-    gradient[size // 2:] = 1.0 / load
-    phi = np.linalg.solve(jacobian.T, gradient)
-    r_ref = residual(t_ref)[0]
-    share = -phi * r_ref.ravel()
-    share = share[: size // 2] + share[size // 2:]
+    share, phi, r_ref = adjoint_split(disc, CREEPAGE, solution.q, t_ref)
     nu, nu_ref = solution.q[1].sum() / load, t_ref[1].sum() / load
     print(f"{args.variant}: nu_v(n = {args.n}) {nu:.6f}, fine (n = {args.fine}) {nu_ref:.6f}: difference "
           f"{nu - nu_ref:+.3e}, adjoint {share.sum():+.3e}")
@@ -294,7 +270,8 @@ def attribution(args) -> None:
         fine_law = kinematic.Discretisation(fine, influence_operator(fine, POISSON), EFFECTS).law
         truth = (fine.scatter(fine_solution.s), fine_law.displacement(q_fine), disc.law.displacement(t_ref),
                  disc.weights)
-    report(grid, solution, share, phi.reshape(2, -1), r_ref, t_ref, s_g + disc.law.apply(t_ref)[1], fine, truth)
+    s_ref = disc.rigid_slip(CREEPAGE) + disc.law.apply(t_ref)[1]  # the coarse slip at t*
+    report(grid, solution, share, phi, r_ref, t_ref, s_ref, fine, truth)
 
 
 def bilinear(fine, field, x, y):
