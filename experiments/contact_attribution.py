@@ -53,10 +53,9 @@ def reference_on(coarse, fine, q_fine) -> np.ndarray:
     return coarse.gather(field)
 
 
-def adjoint_split(disc, creepage, q, t_ref) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The shares (N,) of nu_v's error -phi . R by cell (x and y equations summed), the adjoint phi
-    (2, N) and the residual R (2, N) of the reference tractions t_ref (2, N) [mu p0] in the equations of
-    the discretisation ``disc`` (rig.contact.models.kinematic.Discretisation), J taken at its solution q."""
+def linearised(disc, creepage, q):
+    """(residual, J): t -> (F(t), z, |z|, inside) of the discretisation ``disc``'s equations
+    (rig.contact.models.kinematic.Discretisation) and their Jacobian at tractions q (2, N) [mu p0]."""
     grid = disc.grid
     s_g, rho, bound = disc.rigid_slip(creepage), disc.slip_scale(), grid.gather(grid.p)
 
@@ -68,7 +67,14 @@ def adjoint_split(disc, creepage, q, t_ref) -> tuple[np.ndarray, np.ndarray, np.
 
     _, z, zn, inside = residual(q)
     safe = np.where(zn > 0.0, zn, 1.0)
-    linear = disc.law.linearise(z / safe, np.where(inside, 1.0, bound / safe), inside, rho)
+    return residual, disc.law.linearise(z / safe, np.where(inside, 1.0, bound / safe), inside, rho)
+
+
+def adjoint_split(disc, creepage, q, t_ref) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The shares (N,) of nu_v's error -phi . R by cell (x and y equations summed), the adjoint phi
+    (2, N) and the residual R (2, N) of the reference tractions t_ref (2, N) [mu p0] in the equations of
+    the discretisation ``disc``, J taken at its solution q (J formed densely: n <= 64)."""
+    residual, linear = linearised(disc, creepage, q)
     size = q.size
     unit = np.zeros(size)
     jacobian = np.empty((size, size))
@@ -77,7 +83,7 @@ def adjoint_split(disc, creepage, q, t_ref) -> tuple[np.ndarray, np.ndarray, np.
         jacobian[:, k] = linear.jacobian(unit)
         unit[k] = 0.0
     gradient = np.zeros(size)
-    gradient[size // 2:] = 1.0 / bound.sum()  # nu_v = sum q_y / sum p
+    gradient[size // 2:] = 1.0 / disc.grid.gather(disc.grid.p).sum()  # nu_v = sum q_y / sum p
     phi = np.linalg.solve(jacobian.T, gradient)
     r_ref = residual(t_ref)[0]
     share = -phi * r_ref.ravel()

@@ -2,7 +2,7 @@
 error sits, what in the slip cells' equations makes it, and what changes it
 (docs/contact-convergence.md, "Fifth pass: the slip layer").
 
-    python experiments/slip_layer.py map [--n 32] [--fine 256] [--variant V]
+    python experiments/slip_layer.py map [--n 32] [--fine 256] [--variant V]   (n > 64 or --gmres: GMRES per part)
     python experiments/slip_layer.py nu [--grids 16 32 64 128] [--shifts 1] [--variant V] [--b 1] [--alpha 20.5]
     (BDF3_ROOM=K in the environment: active cells upstream a cell needs for the bdf3 variants, default 3)
 
@@ -18,11 +18,12 @@ the displacement's (the coarse cells' U of t* against the fine U at the same poi
 nu: nu_v and nu_0 on a sequence of grids (means over ``shifts`` sub-cell shifts -1/2 + k/shifts), the
 observed orders of nu_v from differences.
 
-What it shows (main, n = 32/64, fine 8n): the slip cells at x > 0 carry 3.0e-4/1.06e-4 of nu_v's error,
-order 1.5 (bands at 1.3-1.8), not 1.1 (the +-2-cell class "beyond the boundary": 2.05e-4/0.92e-4), spread
-over 0.05-0.5 a from x_T, the rows' last cell nearly nothing; the largest part is BDF2's truncation where
-the slip's direction turns fast (on the axis the slip has a sqrt(x_T - x) term). No local change to the
-rim or to the last cells removes it; third-order differences flip its sign instead of removing it.
+What it shows (main, n = 32/64/128, fine 8n): the slip cells at x > 0 carry 3.0e-4/1.06e-4/3.05e-5 of
+nu_v's error, orders 1.5 then 1.8 (the +-2-cell class "beyond the boundary" gave 1.1 on 32/64), spread
+over 0.05-0.5 a from x_T, the rows' last cell nearly nothing; its largest part is BDF2's truncation where
+the slip's direction turns fast (on the axis the slip has a sqrt(x_T - x) term). The O(h) part is the
+stick zone's (0.97/0.94). No local change to the rim or the last cells removes the layer's share;
+third-order differences flip its sign instead.
 
 Variants (changes to the discrete law, monkeypatched here; rig/ is not edited; run from a copy of the
 tree with the prototype's rig/contact/entry.py and cellwise.py, 9f2f2bd, to apply them to it):
@@ -59,7 +60,8 @@ from rig.contact.influence import influence_operator  # noqa: E402
 from rig.contact.integrate import coefficients  # noqa: E402
 from rig.contact.kinematics import Creepage  # noqa: E402
 from rig.contact.models import kinematic  # noqa: E402
-from contact_attribution import adjoint_split, reference_on  # noqa: E402
+from contact_attribution import adjoint_split, linearised, reference_on  # noqa: E402
+from rig.contact.krylov import gmres  # noqa: E402
 
 POISSON = 0.28
 ALPHA = 20.5
@@ -260,10 +262,26 @@ def attribution(args) -> None:
     t_ref = reference_on(grid, fine, q_fine)
     load = grid.gather(grid.p).sum()
     disc = kinematic.Discretisation(grid, influence_operator(grid, POISSON), EFFECTS)
-    share, phi, r_ref = adjoint_split(disc, CREEPAGE, solution.q, t_ref)
+    if args.n <= 64 and not args.gmres:  # the adjoint, J formed densely
+        share, phi, r_ref = adjoint_split(disc, CREEPAGE, solution.q, t_ref)
+        estimate = share.sum()
+
+        def share_of(r):
+            return -float((phi * r).sum())
+    else:  # one GMRES solve J d = R_part per part asked for: -g . d (g = d nu_v/dt)
+        residual, linear = linearised(disc, CREEPAGE, solution.q)
+        r_ref = residual(t_ref)[0]
+
+        def share_of(r):
+            d, _, converged = gmres(linear.jacobian, r.ravel(), linear.precondition, rtol=1e-9, restart=100,
+                                    maxiter=5000)
+            if not converged:
+                raise RuntimeError("GMRES did not converge")
+            return -float(d.reshape(2, -1)[1].sum() / load)
+        estimate = share_of(r_ref)
     nu, nu_ref = solution.q[1].sum() / load, t_ref[1].sum() / load
     print(f"{args.variant}: nu_v(n = {args.n}) {nu:.6f}, fine (n = {args.fine}) {nu_ref:.6f}: difference "
-          f"{nu - nu_ref:+.3e}, adjoint {share.sum():+.3e}")
+          f"{nu - nu_ref:+.3e}, adjoint {estimate:+.3e}")
 
     truth = None
     if args.variant == "base":  # the fine solution's slip and displacement, for the truncation's split
@@ -271,7 +289,7 @@ def attribution(args) -> None:
         truth = (fine.scatter(fine_solution.s), fine_law.displacement(q_fine), disc.law.displacement(t_ref),
                  disc.weights)
     s_ref = disc.rigid_slip(CREEPAGE) + disc.law.apply(t_ref)[1]  # the coarse slip at t*
-    report(grid, solution, share, phi, r_ref, t_ref, s_ref, fine, truth)
+    report(grid, solution, share_of, r_ref, t_ref, s_ref, fine, truth)
 
 
 def bilinear(fine, field, x, y):
@@ -284,15 +302,16 @@ def bilinear(fine, field, x, y):
             + field[:, i + 1, j + 1] * a * b)
 
 
-def report(grid, solution, share, phi, r_ref, t_ref, s_ref, fine, truth) -> None:
+def report(grid, solution, share_of, r_ref, t_ref, s_ref, fine, truth) -> None:
     """The shares by region: the classes of contact_attribution.py, then the slip zone downstream
-    (x > 0) by the cell's distance to its row's trailing edge, x_T(y) - x [a] and in cells (k_T), each
-    split into the residual's radial part (|t*| against the bound p) and its tangential part
-    (the direction), the latter into the slip's truncation (the coarse slip at t* against the fine
-    solution's slip at the centre) and the averaging (the direction of the cell's mean traction t*
-    against the fine slip's direction at the centre); the truncation once more into the stencil's (BDF2
-    on the fine displacement at x_c, x_c - h, x_c - 2h against the fine slip's dU/dx at x_c) and the
-    displacement's (the coarse cells' U of t* against the fine U at the same points)."""
+    (x > 0) by the cell's distance to its row's trailing edge, x_T(y) - x [a], each split into the
+    residual's radial part (|t*| against the bound p) and its tangential part (the direction), the latter
+    into the averaging (the direction of the cell's mean traction t* against the fine slip's direction at
+    the centre) and the slip's truncation (the coarse slip at t* against the fine solution's slip at the
+    centre), the truncation once more into the stencil's (the coarse transport on the fine displacement
+    at x_c, x_c - h, x_c - 2h against the fine slip's dU/dx at x_c) and the displacement's (the coarse
+    cells' U of t* against the fine U at the same points); then by distance to the stick zone and by
+    cells to the row's end (k_T). share_of(r): nu_v's error due to a part r (2, N) of the residual."""
     x, y = grid.centres()
     full = grid.scatter(solution.stick.astype(float)[None, :])[0] > 0.5
     active = grid.active
@@ -311,11 +330,10 @@ def report(grid, solution, share, phi, r_ref, t_ref, s_ref, fine, truth) -> None
         "all slip cells x > 0 (boundary incl.)": slip & (x >= 0),
     }
     for name, mask in regions.items():
-        print(f"  {name:40s} {mask.sum():5d} cells {share[mask].sum():+.3e}")
+        print(f"  {name:40s} {mask.sum():5d} cells {share_of(r_ref * mask):+.3e}", flush=True)
     radial = t_ref / np.hypot(*t_ref)
     tangent = np.stack([-radial[1], radial[0]])
-    share_t = -(phi * tangent).sum(0) * (r_ref * tangent).sum(0)
-    share_r = share - share_t
+    r_tangent = tangent * (r_ref * tangent).sum(0)
     angle = lambda v: np.arctan2(v[1], v[0])  # noqa: E731
     wrap = lambda a: (a + np.pi) % (2 * np.pi) - np.pi  # noqa: E731
     if truth is not None:
@@ -339,22 +357,22 @@ def report(grid, solution, share, phi, r_ref, t_ref, s_ref, fine, truth) -> None
           " [= stencil + displacement]) x 1e6")
     for lo, hi in ((0, 0.05), (0.05, 0.1), (0.1, 0.2), (0.2, 0.3), (0.3, 0.5), (0.5, 2.0)):
         m = slip & (x >= 0) & (distance >= lo) & (distance < hi)
+        whole, direction = share_of(r_ref * m), share_of(r_tangent * m)
         split = ""
         if truth is not None:
-            a = (share_t * part)[m].sum()
-            b = (share_t * (1 - part) * part_stencil)[m].sum()
-            rest = share_t[m].sum() - a - b
-            split = f" (= {a * 1e6:+7.1f} {(share_t[m].sum() - a) * 1e6:+7.1f} [= {b * 1e6:+7.1f} {rest * 1e6:+7.1f}])"
-        print(f"    [{lo:.2f}, {hi:.2f}) {m.sum():5d} cells {share[m].sum() * 1e6:+7.1f} = {share_r[m].sum() * 1e6:+7.1f}"
-              f" {share_t[m].sum() * 1e6:+7.1f}{split}")
+            a = share_of(r_tangent * m * part)
+            b = share_of(r_tangent * m * (1 - part) * part_stencil)
+            split = f" (= {a * 1e6:+7.1f} {(direction - a) * 1e6:+7.1f} [= {b * 1e6:+7.1f} {(direction - a - b) * 1e6:+7.1f}])"
+        print(f"    [{lo:.2f}, {hi:.2f}) {m.sum():5d} cells {whole * 1e6:+7.1f} = {(whole - direction) * 1e6:+7.1f}"
+              f" {direction * 1e6:+7.1f}{split}", flush=True)
     gap = ndimage.distance_transform_edt(~full, sampling=(grid.hx, grid.hy))  # to the nearest stick cell [a]
     gap = grid.gather(gap[None])[0]
     print("  slip cells x > 0 by distance to the stick zone [a] x 1e6: " + " ".join(
-        f"[{lo:.3f}, {hi:.3f}) {share[slip & (x >= 0) & (gap >= lo) & (gap < hi)].sum() * 1e6:+.1f}"
+        f"[{lo:.3f}, {hi:.3f}) {share_of(r_ref * (slip & (x >= 0) & (gap >= lo) & (gap < hi))) * 1e6:+.1f}"
         for lo, hi in ((0, 0.13), (0.13, 0.26), (0.26, 0.5), (0.5, 9))))
     print("  slip cells x > 0 by k_T (cells to the row's last; 0 = last) x 1e6: " + " ".join(
-        f"{share[slip & (x >= 0) & (k_t == k)].sum() * 1e6:+.1f}" for k in range(8))
-        + f" | >= 8: {share[slip & (x >= 0) & (k_t >= 8)].sum() * 1e6:+.1f}")
+        f"{share_of(r_ref * (slip & (x >= 0) & (k_t == k))) * 1e6:+.1f}" for k in range(8))
+        + f" | >= 8: {share_of(r_ref * (slip & (x >= 0) & (k_t >= 8))) * 1e6:+.1f}")
 
 
 def main() -> None:
@@ -366,6 +384,7 @@ def main() -> None:
     parser.add_argument("--alpha", type=float, default=20.5, help="alpha' (nu only)")
     parser.add_argument("--grids", type=int, nargs="+", default=[16, 32, 64, 128])
     parser.add_argument("--shifts", type=int, default=1)
+    parser.add_argument("--gmres", action="store_true", help="map: GMRES per part also for n <= 64")
     parser.add_argument("--variant", default="base", choices=("base", "centroid", "centroidfull", "twopoint", "rimload", "rimtrail", "rimlead", "trailing", "bdf3", "bdf3slip"))
     args = parser.parse_args()
     global B_OVER_A, ALPHA, CREEPAGE
