@@ -9,7 +9,7 @@ the model is solved directly on n and 2n cells and extrapolated to zero cell siz
 
 The kinematic solver converges monotonically at an order between 1 and 2 (nu_0 and most partial-
 slip states about 2; nu_v of the circle and of narrow ellipses about 1.3, where the leading edge's
-near field and a slip layer by the trailing edge dominate: docs/contact-convergence.md). For any order
+near field dominates: docs/contact-convergence.md). For any order
 p >= 1 the error of nu_n is at most 2 |nu_n - nu_2n|, which this bound is; the second-order
 extrapolation (nu_2n - nu_n)/3 used until 2026-11 underestimated nu_v's error by up to 1.8x.
 

@@ -7,9 +7,9 @@ sequence of issue 9's acceptance 2; on 24 and 48 too for nu_v, while nu_0 of the
 +-2e-4 between neighbouring grids, docs/contact-convergence.md). The order is 1.8 or
 more for nu_0, and for both at b/a = 10; nu_v of the circle and of b/a = 0.1 keeps a part that
 converges at order ~1.3 (measured on n = 32 / 64 / 128; not the stick/slip boundary, which converges at
-second order, but the leading edge's near field and the slip layer between the stick zone's tip and the
-trailing edge: docs/contact-convergence.md, "Where the rest of the error is"), below 0.0011 at n = 32. Full stick (linear theory, alpha' -> inf) has a traction
-singular at the whole edge: there the order is one.
+second order, but the leading edge's near field: docs/contact-convergence.md, third to fifth studies),
+below 0.0011 at n = 32. Full stick (linear theory, alpha' -> inf) has a traction singular at the whole
+edge: there the order is one.
 """
 
 import numpy as np
