@@ -46,7 +46,6 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
-from scipy import fft
 
 from rig.contact import cellwise
 from rig.contact.effects.surface_inertia import SurfaceInertia
@@ -152,11 +151,9 @@ class Linearisation:
         cellwise.place(v, ix, iy, self.field)
         if law.entry is not None:
             law.entry.spread(self.field, v)
-        spectrum = fft.rfft2(self.field, s=op.pad_shape, workers=op.workers)
+        u = op.apply(self.field)
         if law.entry is not None:
             law.entry.clear(self.field)
-        cellwise.symbol_product(op.kernels_hat, spectrum, spectrum)
-        u = fft.irfft2(spectrum, s=op.pad_shape, workers=op.workers)
         cellwise.linearised_law(u, ix, iy, law.transport, v, self.local, self.slip_gain, self.out)
         if law.entry is not None:
             local = law.entry.local
@@ -169,10 +166,7 @@ class Linearisation:
         ix, iy = law.cells
         cellwise.upwind_solve(v.reshape(2, -1), self.diagonal_inverse, self.slip_gain, law.upstream,
                               law.transport[1:], self.projection, ix, iy, self.w, self.field)
-        spectrum = fft.rfft2(self.field, s=op.inverse_shape, workers=op.workers)
-        cellwise.symbol_product(op.inverse_hat, spectrum, spectrum)
-        w = fft.irfft2(spectrum, s=op.inverse_shape, workers=op.workers)
-        cellwise.blend(w, ix, iy, self.projection, self.w, 1.0 / op.self_term[0], self.t)
+        cellwise.blend(op.apply_inverse(self.field), ix, iy, self.projection, self.w, 1.0 / op.self_term[0], self.t)
         return self.t.ravel().copy()
 
 
