@@ -82,8 +82,8 @@ class Discretisation:
     leading edge, not uniformly over the cell (rig.contact.entry). Every row's entry sets the
     traction level of the whole row (in stick, the material carries it downstream), so the model must
     know where x_L lies inside the first cell: without that, nu moved at first order with the edge's
-    sub-cell position, erratically with n [R, our construction; docs/contact-model.md,
-    "Convergence study"].
+    sub-cell position, erratically with n [R, our construction; docs/contact-convergence.md,
+    "The rim and the leading edge"].
     """
 
     def __init__(self, grid: Grid, op: InfluenceOperator, effects: ContactEffects) -> None:
