@@ -23,6 +23,15 @@ Operator = Callable[[np.ndarray], np.ndarray]
 
 
 @numba.njit(cache=True, nogil=True, fastmath=True)
+def norm(x):
+    """Euclidean norm of a 1-d array (single-threaded; module docstring)."""
+    total = 0.0
+    for k in range(x.size):
+        total += x[k] * x[k]
+    return np.sqrt(total)
+
+
+@numba.njit(cache=True, nogil=True, fastmath=True)
 def _orthogonalise(basis, j, w, column):
     """Classical Gram-Schmidt of w against basis[0..j], twice; adds the coefficients to column[0..j]
     and returns |w| afterwards."""
@@ -35,10 +44,7 @@ def _orthogonalise(basis, j, w, column):
             column[i] += h
             for k in range(n):
                 w[k] -= h * basis[i, k]
-    norm = 0.0
-    for k in range(n):
-        norm += w[k] * w[k]
-    return np.sqrt(norm)
+    return norm(w)
 
 
 @numba.njit(cache=True, nogil=True, fastmath=True)
@@ -48,15 +54,6 @@ def _combine(coefficients, vectors, out):
         c = coefficients[i]
         for k in range(out.size):
             out[k] += c * vectors[i, k]
-
-
-@numba.njit(cache=True, nogil=True, fastmath=True)
-def norm(x):
-    """Euclidean norm of a 1-d array (single-threaded; module docstring)."""
-    total = 0.0
-    for k in range(x.size):
-        total += x[k] * x[k]
-    return np.sqrt(total)
 
 
 def gmres(matvec: Operator, b: np.ndarray, precondition: Operator, *, rtol: float, restart: int = 60,

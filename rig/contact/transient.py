@@ -171,8 +171,7 @@ class _Stepper:
         op = influence_operator(grid, poisson)
         # a step carries no transport: the slip displacement takes the displacement at the cell itself
         self.law = ElasticLaw(grid, op, np.ones((1, grid.index.size)))
-        plastic = effects.plastic_slip
-        self.plastic_rate = 0.0 if plastic is None else plastic.rate(poisson)
+        self.plastic_rate = effects.plastic_rate(poisson)
         self.static = effects.static_friction
         self.rho = 1.0 / op.self_term[0]
         self.x, self.y = grid.centres()

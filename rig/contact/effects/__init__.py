@@ -47,6 +47,10 @@ class ContactEffects:
         pressure-dependent coefficient (rig.contact.effects.pressure_friction) when it is on."""
         return p if self.pressure_friction is None else self.pressure_friction.bound(p)
 
+    def plastic_rate(self, poisson: float) -> float:
+        """Plastic slip per unit traction, eq. (25) (rig.contact.effects.plastic_slip): 0 when it is off."""
+        return 0.0 if self.plastic_slip is None else self.plastic_slip.rate(poisson)
+
     @classmethod
     def from_keywords(cls, **values: float) -> ContactEffects:
         """Build the named effects from solve() keywords (already checked to be known names)."""

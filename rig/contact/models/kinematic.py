@@ -89,8 +89,7 @@ class Discretisation:
     def __init__(self, grid: Grid, op: InfluenceOperator, effects: ContactEffects) -> None:
         self.grid = grid
         self.weights, self.x_slip = transport_weights(grid)
-        plastic = effects.plastic_slip
-        self.plastic_rate = 0.0 if plastic is None else plastic.rate(op.poisson)
+        self.plastic_rate = effects.plastic_rate(op.poisson)
         self.law = ElasticLaw(grid, op, self.weights, self.plastic_rate, effects.surface_inertia,
                               entry_profile(grid, op.poisson))
 
