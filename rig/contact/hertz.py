@@ -56,6 +56,22 @@ def line_pressure(x: np.ndarray, y: np.ndarray, *, a: float, b: float, p0: float
     return np.where(np.abs(y) <= a, p0 * np.sqrt(s), 0.0)
 
 
+def hertz_traction_slip(x: np.ndarray, y: np.ndarray, poisson: float, direction: int) -> np.ndarray:
+    """(du_x/dx, du_y/dx) (2, ...) [q0/G] inside a circle of radius a under the Hertz-shaped tangential
+    traction q = q0 sqrt(1 - r^2/a^2) along x (direction 0) or y (1); x, y in units of a.
+
+    Johnson, Contact Mechanics (1985), section 7.2, for one body with c = pi q0/(32 G a):
+    traction along x: u_x = c [4 (2 - nu) a^2 - (4 - 3 nu) x^2 - (4 - nu) y^2], u_y = c 2 nu x y.
+    Returned for the pair, twice that, with G the pair's combined modulus (2/G = 1/G1 + 1/G2) and nu
+    its Poisson's ratio: the relative displacement's rate along x, which is the elastic slip per unit
+    rolling speed (seed 000, eqs. 8, 10). A closed form the grid models are checked against.
+    """
+    c = 2.0 * np.pi / 32.0
+    along = -2.0 * c * ((4.0 - 3.0 * poisson) if direction == 0 else (4.0 - poisson)) * np.asarray(x, dtype=float)
+    cross = 2.0 * c * poisson * np.asarray(y, dtype=float)
+    return np.stack([along, cross] if direction == 0 else [cross, along])
+
+
 @dataclass(frozen=True)
 class PointGeometry:
     """Principal radii of curvature [m] of the two bodies, aligned with x (rolling) and y.
