@@ -85,11 +85,23 @@ class InfluenceOperator:
     workers: int  # FFT threads: 1 for small grids, where threading costs more than it saves
     poisson: float  # Poisson's ratio of the kernels [1]
 
-    def _convolve(self, field: np.ndarray, symbol: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
+    def _spectrum(self, field: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
+        """rfft2 of field (2, nxg, ny) zero-padded to ``shape``, one axis at a time: the real transforms
+        along the rows run over the grid's nxg rows only, not over the padding's zero rows."""
+        rows = fft.rfft(field, n=shape[1], axis=2, workers=self.workers)
+        return fft.fft(rows, n=shape[0], axis=1, workers=self.workers, overwrite_x=True)
+
+    def _field(self, spectrum: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
+        """irfft2 of spectrum on ``shape``, cut to the grid (2, nxg, ny): the rows' real transforms
+        only over the grid's rows (overwrites spectrum)."""
         mx, my = self.grid_shape
-        spectrum = fft.rfft2(field, s=shape, workers=self.workers)
+        rows = fft.ifft(spectrum, axis=1, workers=self.workers, overwrite_x=True)[:, :mx]
+        return fft.irfft(rows, n=shape[1], axis=2, workers=self.workers)[:, :, :my]
+
+    def _convolve(self, field: np.ndarray, symbol: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
+        spectrum = self._spectrum(field, shape)
         cellwise.symbol_product(symbol, spectrum, spectrum)
-        return fft.irfft2(spectrum, s=shape, workers=self.workers)[:, :mx, :my]
+        return self._field(spectrum, shape)
 
     def apply(self, q: np.ndarray) -> np.ndarray:
         """Displacement u (2, nxg, ny) [mu p0 a/G] of tractions q (2, nxg, ny) [mu p0]."""
@@ -97,9 +109,9 @@ class InfluenceOperator:
 
     def apply_riesz(self, f: np.ndarray) -> np.ndarray:
         """(1/(2 pi)) int f(x')/|x - x'| dA' of a cell-wise constant field f (2, nxg, ny) [units a]."""
-        mx, my = self.grid_shape
-        fh = fft.rfft2(f, s=self.pad_shape, workers=self.workers)
-        return fft.irfft2(self.riesz_hat * fh, s=self.pad_shape, workers=self.workers)[:, :mx, :my]
+        spectrum = self._spectrum(f, self.pad_shape)
+        spectrum *= self.riesz_hat
+        return self._field(spectrum, self.pad_shape)
 
     def apply_inverse(self, u: np.ndarray) -> np.ndarray:
         """Circulant inverse of :meth:`apply` on a periodic grid a quarter larger than the grid: an
