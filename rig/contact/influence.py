@@ -72,6 +72,10 @@ class InfluenceOperator:
     ``apply(q)`` takes q of shape (2, nxg, ny) and returns u of the same shape. ``self_term``
     and ``upstream_term`` are the (xx, yy) influences of a cell on itself and on the cell one
     step upstream (used to scale and precondition the solver).
+
+    The products' transforms run one axis at a time, so that the padding's zero rows are never
+    transformed, and on one thread: up to n = 128 a second thread cost more than it saved even with
+    the second core idle (docs/contact-model.md, "Solver cost", fourth pass).
     """
 
     grid_shape: tuple[int, int]
@@ -82,14 +86,25 @@ class InfluenceOperator:
     riesz_hat: np.ndarray  # (px, py//2+1): cell integral of 1/(2 pi R), symbol ~ 1/|k|
     self_term: np.ndarray  # (2,) xx, yy
     upstream_term: np.ndarray  # (2,) xx, yy
-    workers: int  # FFT threads: 1 for small grids, where threading costs more than it saves
     poisson: float  # Poisson's ratio of the kernels [1]
 
-    def _convolve(self, field: np.ndarray, symbol: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
+    def _spectrum(self, field: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
+        """rfft2 of field (2, nxg, ny) zero-padded to ``shape``, one axis at a time: the real transforms
+        along the rows run over the grid's nxg rows only, not over the padding's zero rows."""
+        rows = fft.rfft(field, n=shape[1], axis=2)
+        return fft.fft(rows, n=shape[0], axis=1, overwrite_x=True)
+
+    def _field(self, spectrum: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
+        """irfft2 of spectrum on ``shape``, cut to the grid (2, nxg, ny): the rows' real transforms
+        only over the grid's rows (overwrites spectrum)."""
         mx, my = self.grid_shape
-        spectrum = fft.rfft2(field, s=shape, workers=self.workers)
+        rows = fft.ifft(spectrum, axis=1, overwrite_x=True)[:, :mx]
+        return fft.irfft(rows, n=shape[1], axis=2)[:, :, :my]
+
+    def _convolve(self, field: np.ndarray, symbol: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
+        spectrum = self._spectrum(field, shape)
         cellwise.symbol_product(symbol, spectrum, spectrum)
-        return fft.irfft2(spectrum, s=shape, workers=self.workers)[:, :mx, :my]
+        return self._field(spectrum, shape)
 
     def apply(self, q: np.ndarray) -> np.ndarray:
         """Displacement u (2, nxg, ny) [mu p0 a/G] of tractions q (2, nxg, ny) [mu p0]."""
@@ -97,9 +112,9 @@ class InfluenceOperator:
 
     def apply_riesz(self, f: np.ndarray) -> np.ndarray:
         """(1/(2 pi)) int f(x')/|x - x'| dA' of a cell-wise constant field f (2, nxg, ny) [units a]."""
-        mx, my = self.grid_shape
-        fh = fft.rfft2(f, s=self.pad_shape, workers=self.workers)
-        return fft.irfft2(self.riesz_hat * fh, s=self.pad_shape, workers=self.workers)[:, :mx, :my]
+        spectrum = self._spectrum(f, self.pad_shape)
+        spectrum *= self.riesz_hat
+        return self._field(spectrum, self.pad_shape)
 
     def apply_inverse(self, u: np.ndarray) -> np.ndarray:
         """Circulant inverse of :meth:`apply` on a periodic grid a quarter larger than the grid: an
@@ -123,9 +138,10 @@ def _kernel_symbols(shape: tuple[int, int], hx: float, hy: float, poisson: float
 
 
 def _even_fast_length(target: int) -> int:
-    """The smallest even length >= target that scipy's FFT factors into small primes. Odd lengths
-    are fast alone but split badly between FFT threads: (525, 256) took 3.4 ms a transform pair with
-    two threads, (520, 256) 2.4 ms and (540, 256) 2.1 ms (b/a = 10, n = 128)."""
+    """The smallest even length >= target that scipy's FFT factors into small primes. Chosen when the
+    products ran on two threads, where odd lengths split badly ((525, 256) took 3.4 ms a transform
+    pair, (520, 256) 2.4 ms and (540, 256) 2.1 ms; b/a = 10, n = 128); kept because the
+    preconditioner's periodic grid, and so the solver's path, depends on it."""
     length = fft.next_fast_len(target)
     while length % 2:
         length = fft.next_fast_len(length + 1)
@@ -144,10 +160,9 @@ def _operator(mx: int, my: int, hx: float, hy: float, poisson: float) -> Influen
     inverse_hat = np.stack([kyy / det, -kxy / det, kxx / det])
     k0 = cell_kernels(np.array(0.0), np.array(0.0), hx, hy, poisson)
     k1 = cell_kernels(np.array(-hx), np.array(0.0), hx, hy, poisson)
-    workers = 1 if pad[0] * pad[1] < 2**16 else -1
     return InfluenceOperator(
         (mx, my), pad, kernels_hat, inverse_shape, inverse_hat, riesz_hat, np.array([k0[0], k0[2]]),
-        np.array([k1[0], k1[2]]), workers, poisson,
+        np.array([k1[0], k1[2]]), poisson,
     )
 
 
