@@ -4,6 +4,7 @@ closed form").
 
     python experiments/edge_consistency.py operator [--grids 16 32 64 128 256]
     python experiments/edge_consistency.py calibrated [--cells 3] [--grids 16 24 32 48 64 128] [--b 1] [--alpha 20.5]
+    python experiments/edge_consistency.py stencil [--cells 0] [--grids 16 24 32 48 64 128]
 
 operator: the circle (b/a = 1), Poisson 0.28. The traction t = (p, 0) and (0, p) with the Hertz shape
 p = p0 sqrt(1 - r^2) has a displacement that is a quadratic in x and y inside the contact (Johnson's
@@ -16,6 +17,12 @@ calibrated: nu_v and nu_0 of pure spin when the first ``--cells`` slip cells of 
 correction, -e_k t_first / p_first per traction component, that makes the operator exact on the two
 Hertz-shaped fields above (e_k: the slip error of cell k of the row under them). Monkeypatched here (rig/
 is not edited); the circle only (the closed form is the circle's).
+
+stencil: the same idea one degree higher (Galin: a Hertz-weighted linear traction p {1, x, y} e_b has a
+quadratic slip inside): each cell's slip gets a correction from its own traction and that of its upstream
+and its cross-row neighbour (towards y = 0), solved per cell to be exact on the six fields, whose exact
+slips are quadratics fitted on the interior of an n = 128 grid; every cell (--cells 0) or the first and
+last --cells cells of each row. Circle, pure spin.
 """
 
 from __future__ import annotations
@@ -32,6 +39,7 @@ from rig.contact.grid import make_grid
 from rig.contact.hertz import hertz_traction_slip
 from rig.contact.influence import influence_operator
 from rig.contact.solve import solve
+from rig.errors import ConvergenceError
 
 POISSON = 0.28
 ROWS_NEAR_AXIS = 0.7  # |y| [a] of the rows whose leading-edge cells are reported
@@ -102,21 +110,100 @@ def calibrated_profile(cells: int):
     return profile
 
 
+def field_slips(grid, law, poisson):
+    """{(phi, b): elastic slip (2, N)} of the traction p phi e_b, phi in 1, x, y."""
+    p = grid.gather(grid.p)
+    x, y = grid.centres()
+    slips = {}
+    for name, phi in (("1", np.ones_like(x)), ("x", x), ("y", y)):
+        for b in (0, 1):
+            t = np.zeros((2, p.size))
+            t[b] = p * phi
+            slips[name, b] = law.apply(t)[1]
+    return slips
+
+
+def quadratics(x, y):
+    return np.stack([np.ones_like(x), x, y, x * x, x * y, y * y], axis=-1)
+
+
+def stencil_profile(rim_cells: int):
+    """An entry_profile that adds the linear-exact stencil correction (module docstring)."""
+    plain = entry.entry_profile
+
+    def uncorrected(grid, poisson):
+        kinematic.entry_profile = plain
+        try:
+            return kinematic.Discretisation(grid, influence_operator(grid, poisson), ContactEffects())
+        finally:
+            kinematic.entry_profile = profile
+
+    def profile(grid, poisson):
+        base = plain(grid, poisson)
+        fine = make_grid("ellipse", 1.0, 128)
+        fine_disc = uncorrected(fine, poisson)
+        _, y_fine = fine.centres()
+        inside = fine_disc.x_slip**2 + y_fine**2 < INTERIOR**2
+        basis = quadratics(fine_disc.x_slip[inside], y_fine[inside])
+        exact = {key: [np.linalg.lstsq(basis, slip[a][inside], rcond=None)[0] for a in (0, 1)]
+                 for key, slip in field_slips(fine, fine_disc.law, poisson).items()}
+        disc = uncorrected(grid, poisson)
+        x, y = grid.centres()
+        here = quadratics(disc.x_slip, y)
+        error = {key: [slip[a] - here @ exact[key][a] for a in (0, 1)]
+                 for key, slip in field_slips(grid, disc.law, poisson).items()}
+        p, size, ny = grid.gather(grid.p), grid.index.size, grid.ny
+        position = np.full(grid.p.size, -1)
+        position[grid.index] = np.arange(size)
+        upstream = position[grid.index - ny]
+        across = position[grid.index + np.where(y > 0, -1, 1)]
+        chosen = np.ones(size, dtype=bool)
+        if rim_cells:
+            from_lead = np.cumsum(grid.active, axis=0)
+            from_trail = np.cumsum(grid.active[::-1], axis=0)[::-1]
+            chosen = (grid.active & ((from_lead <= rim_cells) | (from_trail <= rim_cells))).ravel()[grid.index]
+        rows, columns, values = [], [], []
+        for c in np.flatnonzero(chosen & (upstream >= 0) & (across >= 0)):
+            cells = np.array([c, upstream[c], across[c]])
+            moments = np.array([p[cells], p[cells] * x[cells], p[cells] * y[cells]])
+            for a in (0, 1):
+                for b in (0, 1):
+                    weights = np.linalg.solve(moments, -np.array([error[name, b][a][c] for name in ("1", "x", "y")]))
+                    rows += [a * size + c] * 3
+                    columns += list(b * size + cells)
+                    values += list(weights)
+        correction = sparse.csr_matrix((values, (rows, columns)), shape=(2 * size, 2 * size))
+        return entry.EntryProfile(base.cells, base.full, base.neighbour, base.neighbour_active, base.share,
+                                  (base.local + correction).tocsr())
+
+    return profile
+
+
 def calibrated_study(args) -> None:
-    if args.cells:
-        kinematic.entry_profile = calibrated_profile(args.cells)
-    print(f"pure spin, b/a = {args.b}, alpha' = {args.alpha}, first {args.cells} cells of each row calibrated")
+    if args.study == "stencil":
+        kinematic.entry_profile = stencil_profile(args.cells)
+        print(f"pure spin, circle, alpha' = {args.alpha}, linear-exact stencil on "
+              + (f"the first and last {args.cells} cells of each row" if args.cells else "every cell"))
+    else:
+        if args.cells:
+            kinematic.entry_profile = calibrated_profile(args.cells)
+        print(f"pure spin, b/a = {args.b}, alpha' = {args.alpha}, first {args.cells} cells of each row calibrated")
     for n in args.grids:
-        r = solve("kinematic", shape="ellipse", b_over_a=args.b, alpha=args.alpha, c_over_a=0.0, l_over_a=0.0,
-                  poisson=POISSON, n=n)
-        print(f"n {n:4d}  nu_v {r.nu_v:.7f}  nu_0 {r.nu_0:.7f}", flush=True)
+        try:
+            r = solve("kinematic", shape="ellipse", b_over_a=args.b, alpha=args.alpha, c_over_a=0.0, l_over_a=0.0,
+                      poisson=POISSON, n=n)
+        except ConvergenceError as error:
+            print(f"n {n:4d}  {error}", flush=True)
+            continue
+        print(f"n {n:4d}  nu_v {r.nu_v:.7f}  nu_0 {r.nu_0:.7f}  Newton {r.info['newton_iterations']}", flush=True)
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("study", choices=("operator", "calibrated"))
+    parser.add_argument("study", choices=("operator", "calibrated", "stencil"))
     parser.add_argument("--grids", type=int, nargs="+")
-    parser.add_argument("--cells", type=int, default=3, help="calibrated: cells of each row corrected (0: none)")
+    parser.add_argument("--cells", type=int, help="cells of each row corrected (calibrated: default 3, 0: none; "
+                        "stencil: default 0, every cell)")
     parser.add_argument("--b", type=float, default=1.0, help="calibrated: b/a (the correction is exact for 1 only)")
     parser.add_argument("--alpha", type=float, default=20.5)
     args = parser.parse_args()
@@ -124,6 +211,10 @@ def main() -> None:
         operator_study(args.grids or [16, 32, 64, 128, 256])
     else:
         args.grids = args.grids or [16, 24, 32, 48, 64, 128]
+        if args.cells is None:
+            args.cells = 3 if args.study == "calibrated" else 0
+        if args.study == "stencil":
+            args.b = 1.0
         calibrated_study(args)
 
 
