@@ -78,17 +78,30 @@ def operator_study(grids) -> None:
               + f" | {per_cell.sum(axis=0).mean() * grid.hx:+.2e}")
 
 
-def calibrated_profile(cells: int):
-    """An entry_profile that adds the local correction of ``cells`` cells (module docstring)."""
+def with_correction(correction):
+    """An entry_profile that adds correction(grid, poisson, disc) (2N, 2N) to the local slip, disc the
+    uncorrected Discretisation of the grid (whose errors the correction is made from; any other the
+    correction makes is uncorrected too)."""
     plain = entry.entry_profile
 
     def profile(grid, poisson):
         base = plain(grid, poisson)
-        kinematic.entry_profile = plain  # the uncorrected operator measures the errors
+        kinematic.entry_profile = plain  # every Discretisation the correction makes is uncorrected
         try:
             disc = kinematic.Discretisation(grid, influence_operator(grid, poisson), ContactEffects())
+            local = correction(grid, poisson, disc)
         finally:
             kinematic.entry_profile = profile
+        return entry.EntryProfile(base.cells, base.full, base.neighbour, base.neighbour_active, base.share,
+                                  (base.local + local).tocsr())
+
+    return profile
+
+
+def first_cells_correction(cells: int):
+    """The calibrated correction of the first ``cells`` cells of each row (module docstring)."""
+
+    def correction(grid, poisson, disc):
         size = grid.index.size
         first = cells_from_edge(grid, 0)
         p_first = grid.gather(grid.p)[first]
@@ -102,15 +115,13 @@ def calibrated_profile(cells: int):
                     rows.append(a * size + target[ok])
                     columns.append(b * size + first[ok])
                     values.append(-error[a, target[ok]] / p_first[ok])
-        correction = sparse.csr_matrix((np.concatenate(values), (np.concatenate(rows), np.concatenate(columns))),
-                                       shape=(2 * size, 2 * size))
-        return entry.EntryProfile(base.cells, base.full, base.neighbour, base.neighbour_active, base.share,
-                                  (base.local + correction).tocsr())
+        return sparse.csr_matrix((np.concatenate(values), (np.concatenate(rows), np.concatenate(columns))),
+                                 shape=(2 * size, 2 * size))
 
-    return profile
+    return correction
 
 
-def field_slips(grid, law, poisson):
+def field_slips(grid, law):
     """{(phi, b): elastic slip (2, N)} of the traction p phi e_b, phi in 1, x, y."""
     p = grid.gather(grid.p)
     x, y = grid.centres()
@@ -127,31 +138,22 @@ def quadratics(x, y):
     return np.stack([np.ones_like(x), x, y, x * x, x * y, y * y], axis=-1)
 
 
-def stencil_profile(rim_cells: int):
-    """An entry_profile that adds the linear-exact stencil correction (module docstring)."""
-    plain = entry.entry_profile
+def stencil_correction(rim_cells: int):
+    """The linear-exact stencil correction (module docstring) of every cell, or of the first and last
+    ``rim_cells`` of each row."""
 
-    def uncorrected(grid, poisson):
-        kinematic.entry_profile = plain
-        try:
-            return kinematic.Discretisation(grid, influence_operator(grid, poisson), ContactEffects())
-        finally:
-            kinematic.entry_profile = profile
-
-    def profile(grid, poisson):
-        base = plain(grid, poisson)
+    def correction(grid, poisson, disc):
         fine = make_grid("ellipse", 1.0, 128)
-        fine_disc = uncorrected(fine, poisson)
+        fine_disc = kinematic.Discretisation(fine, influence_operator(fine, poisson), ContactEffects())
         _, y_fine = fine.centres()
         inside = fine_disc.x_slip**2 + y_fine**2 < INTERIOR**2
         basis = quadratics(fine_disc.x_slip[inside], y_fine[inside])
         exact = {key: [np.linalg.lstsq(basis, slip[a][inside], rcond=None)[0] for a in (0, 1)]
-                 for key, slip in field_slips(fine, fine_disc.law, poisson).items()}
-        disc = uncorrected(grid, poisson)
+                 for key, slip in field_slips(fine, fine_disc.law).items()}
         x, y = grid.centres()
         here = quadratics(disc.x_slip, y)
         error = {key: [slip[a] - here @ exact[key][a] for a in (0, 1)]
-                 for key, slip in field_slips(grid, disc.law, poisson).items()}
+                 for key, slip in field_slips(grid, disc.law).items()}
         p, size, ny = grid.gather(grid.p), grid.index.size, grid.ny
         position = np.full(grid.p.size, -1)
         position[grid.index] = np.arange(size)
@@ -172,21 +174,19 @@ def stencil_profile(rim_cells: int):
                     rows += [a * size + c] * 3
                     columns += list(b * size + cells)
                     values += list(weights)
-        correction = sparse.csr_matrix((values, (rows, columns)), shape=(2 * size, 2 * size))
-        return entry.EntryProfile(base.cells, base.full, base.neighbour, base.neighbour_active, base.share,
-                                  (base.local + correction).tocsr())
+        return sparse.csr_matrix((values, (rows, columns)), shape=(2 * size, 2 * size))
 
-    return profile
+    return correction
 
 
-def calibrated_study(args) -> None:
+def corrected_study(args) -> None:
     if args.study == "stencil":
-        kinematic.entry_profile = stencil_profile(args.cells)
+        kinematic.entry_profile = with_correction(stencil_correction(args.cells))
         print(f"pure spin, circle, alpha' = {args.alpha}, linear-exact stencil on "
               + (f"the first and last {args.cells} cells of each row" if args.cells else "every cell"))
     else:
         if args.cells:
-            kinematic.entry_profile = calibrated_profile(args.cells)
+            kinematic.entry_profile = with_correction(first_cells_correction(args.cells))
         print(f"pure spin, b/a = {args.b}, alpha' = {args.alpha}, first {args.cells} cells of each row calibrated")
     for n in args.grids:
         try:
@@ -215,7 +215,7 @@ def main() -> None:
             args.cells = 3 if args.study == "calibrated" else 0
         if args.study == "stencil":
             args.b = 1.0
-        calibrated_study(args)
+        corrected_study(args)
 
 
 if __name__ == "__main__":
