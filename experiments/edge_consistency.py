@@ -46,13 +46,17 @@ ROWS_NEAR_AXIS = 0.7  # |y| [a] of the rows whose leading-edge cells are reporte
 INTERIOR = 0.5  # r [a] of the cells called interior
 
 
+def slip_under(grid, law, density, direction):
+    """The law's elastic slip (2, N) [p0/G] under the traction p density e_direction (density (N,) [1])."""
+    t = np.zeros((2, grid.index.size))
+    t[direction] = grid.gather(grid.p) * density
+    return law.apply(t)[1]
+
+
 def operator_errors(grid, disc, poisson, component):
     """The model's elastic slip minus the exact one (2, N) for the Hertz-shaped traction along ``component``."""
-    p = grid.gather(grid.p)
-    t = np.zeros((2, p.size))
-    t[component] = p
     _, y = grid.centres()
-    return disc.law.apply(t)[1] - hertz_traction_slip(disc.x_slip, y, poisson, component)
+    return slip_under(grid, disc.law, 1.0, component) - hertz_traction_slip(disc.x_slip, y, poisson, component)
 
 
 def cells_from_edge(grid, k):
@@ -123,15 +127,8 @@ def first_cells_correction(cells: int):
 
 def field_slips(grid, law):
     """{(phi, b): elastic slip (2, N)} of the traction p phi e_b, phi in 1, x, y."""
-    p = grid.gather(grid.p)
     x, y = grid.centres()
-    slips = {}
-    for name, phi in (("1", np.ones_like(x)), ("x", x), ("y", y)):
-        for b in (0, 1):
-            t = np.zeros((2, p.size))
-            t[b] = p * phi
-            slips[name, b] = law.apply(t)[1]
-    return slips
+    return {(name, b): slip_under(grid, law, phi, b) for name, phi in (("1", 1.0), ("x", x), ("y", y)) for b in (0, 1)}
 
 
 def quadratics(x, y):

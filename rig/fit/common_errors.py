@@ -70,7 +70,6 @@ def read_common_errors(cal: pd.DataFrame, readings: pd.DataFrame, f_n: np.ndarra
                        geometries) -> tuple[CommonErrors | None, list[str]]:
     """The run's common errors from its calibration records and readings (one row per fitted point),
     the points' F_N [N] and geometries; with one note per part for the summary."""
-    lever = np.array([g.dynamometer_lever / g.yoke_lever for g in geometries])
     notes = []
     calibration = None
     if any(CAL + c not in cal.columns for c in CALIBRATION_COLUMNS):
@@ -91,7 +90,8 @@ def read_common_errors(cal: pd.DataFrame, readings: pd.DataFrame, f_n: np.ndarra
     if calibration is None:
         return CommonErrors(None, 0.0, 0.0, 0.0, np.zeros(f_n.size), drift), notes
     sensitivity, u_sensitivity, u_offset, cov_so = map(float, calibration)
-    return CommonErrors(sensitivity, u_sensitivity, u_offset, cov_so, -lever / (sensitivity * f_n), drift), notes
+    return CommonErrors(sensitivity, u_sensitivity, u_offset, cov_so, -_levers(geometries) / (sensitivity * f_n),
+                        drift), notes
 
 
 def drift_covariance(readings: pd.DataFrame, cal: pd.DataFrame, f_n: np.ndarray, geometries) -> tuple:
@@ -112,9 +112,14 @@ def drift_covariance(readings: pd.DataFrame, cal: pd.DataFrame, f_n: np.ndarray,
     if rate[0] == 0.0:
         return None, "dynamometer 10's zero drift is off in this log: no covariance between points from it"
     sens = cal[CAL + "sensitivity_V_N"].to_numpy(dtype=float)
-    b = np.array([g.dynamometer_lever / g.yoke_lever for g in geometries]) / (sens * f_n)
+    b = _levers(geometries) / (sens * f_n)
     cov = gain[0] ** 2 * rate[0] * np.minimum.outer(age, age) * np.outer(b, b)
     return cov, (f"dynamometer 10's zero drift since the calibration (random walk, g D = "
                  f"{gain[0] * math.sqrt(rate[0]):.3g} V/s^0.5): covariance g^2 D^2 min(t_i, t_j) between "
                  f"points (t = {age.min():.0f}-{age.max():.0f} s after the zero) added to the generalised "
                  "least squares")
+
+
+def _levers(geometries) -> np.ndarray:
+    """lever_dyn/R_v [1] per point: dynamometer 10's reading to F_y (eq. 33)."""
+    return np.array([g.dynamometer_lever / g.yoke_lever for g in geometries])
