@@ -1,9 +1,9 @@
 """Where the kinematic model's discretisation error comes from: the grid studies of
 docs/contact-convergence.md, one state at a time.
 
-    python experiments/contact_convergence.py sequence B ALPHA C L [--grids 16 24 32 48 64 128]
+    python experiments/contact_convergence.py sequence B ALPHA C L [--grids 16 24 32 48 64 128] [--shape line]
     python experiments/contact_convergence.py shift SHAPE B ALPHA C L [--n 32]
-    python experiments/contact_convergence.py refine B ALPHA C L [--nx 64] [--ny 32]
+    python experiments/contact_convergence.py refine B ALPHA C L [--nx 64] [--ny 32] [--shape line]
 
 B = b/a, ALPHA = alpha', (C, L) = rolling point (c/a, l/a); Poisson's ratio 0.28.
 sequence: nu_v, nu_0 on a sequence of grids, with the observed orders of successive doublings.
@@ -36,7 +36,7 @@ def _nu(b, alpha, c, l, n, shape="ellipse"):
 
 
 def sequence(args) -> None:
-    values = {n: _nu(args.b, args.alpha, args.c, args.l, n) for n in args.grids}
+    values = {n: _nu(args.b, args.alpha, args.c, args.l, n, args.shape) for n in args.grids}
     for n, (v, o, newton, krylov) in values.items():
         print(f"n {n:4d}: nu_v {v:.6f} nu_0 {o:.6f}   ({newton} Newton, {krylov} products)")
     for k, name in enumerate(("nu_v", "nu_0")):
@@ -69,7 +69,7 @@ def refine(args) -> None:
             for nx, ny in pairs:
                 grid_module.cells_along_rolling = lambda n, b, ratio=nx / ny: int(round(ratio * n))
                 grid_module.make_grid.cache_clear()
-                v, o, newton, krylov = _nu(args.b, args.alpha, args.c, args.l, ny)
+                v, o, newton, krylov = _nu(args.b, args.alpha, args.c, args.l, ny, args.shape)
                 print(f"{label}: nx {nx:4d} ny {ny:4d}: nu_v {v:.6f} nu_0 {o:.6f}   "
                       f"({newton} Newton, {krylov} products)")
     finally:
@@ -84,6 +84,8 @@ def main() -> int:
         p = sub.add_parser(name)
         if name == "shift":
             p.add_argument("shape", choices=grid_module.SHAPES)
+        else:
+            p.add_argument("--shape", choices=grid_module.SHAPES, default="ellipse")
         for field in ("b", "alpha", "c", "l"):
             p.add_argument(field, type=float)
         if name == "sequence":
