@@ -3,7 +3,7 @@
     python benchmarks/bench_surrogate.py [--model kinematic --n 16 --shape line --b-over-a 1]
         [--resolutions 21,5,5 41,9,9 61,13,13] [--samples 200] [--workers 2] [--markdown FILE]
 
-Stand-A-like domain (seed notes 3.1): l/a in [-1.5, 1.5], c/a in [0, 0.9], alpha' in [0.3, 3].
+Stand-A-like domain (Equations §3.1): l/a in [-1.5, 1.5], c/a in [0, 0.9], alpha' in [0.3, 3].
 For each table resolution (nodes along l/a, c/a, log alpha'): build time (no cache), median
 time per evaluation - scalar (law(l, c, alpha) with floats, and with the Jacobian) and vectorised
 (per point, over all samples) - and the largest and mean absolute error of nu_T, nu_v, nu_0 against

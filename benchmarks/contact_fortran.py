@@ -6,8 +6,8 @@ dimensionless coefficients, appended to a CSV (default tests/contact/data/contac
 
     alpha_prime [1], elements_across [1], nu_v [1], nu_0 [1], cpu_s [s]
 
-* nu_v = |F_y| / (mu F_N): lateral force, y perpendicular to rolling (seed notes eq. 28).
-* nu_0 = |M_z| / (mu a F_N): moment about the contact centre (seed notes eq. 26, rolling point at the centre).
+* nu_v = |F_y| / (mu F_N): lateral force, y perpendicular to rolling (Equations, eq. (28)).
+* nu_0 = |M_z| / (mu a F_N): moment about the contact centre (Equations, eq. (26), rolling point at the centre).
 * cpu_s: user + system CPU time of the CONTACT process for one case (influence coefficients, normal and
   tangential solves and output).
 

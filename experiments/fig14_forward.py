@@ -33,7 +33,7 @@ from rig.contact.effects.pressure_friction import friction_at_peak_pressure
 from rig.contact.solve import DISCRETISATION_REVISION, solve
 from rig.stands.disc_roller import parameters as P
 
-LOADS_N = (9.0, 21.0, 36.0, 144.0)  # dead weights (seed 000 3.2.1)
+LOADS_N = (9.0, 21.0, 36.0, 144.0)  # dead weights ([Koziarski] section 3.2.1)
 POSITIONS_M = (-0.020, -0.010, -0.0032, 0.0, 0.0032, 0.010, 0.020)  # roller position l (text)
 OFFSETS_M = (0.0, -0.008)  # c = 0 (Fig. 14) and c/a = -2 (Fig. 15)
 MODEL = dict(shape="line", poisson=0.5, n=12)  # the fig14/fig15 scenes' contact

@@ -1,4 +1,4 @@
-"""What would explain seed 000's Figs. 14-15? Plastic slip (Psi > 1) against a pressure-dependent mu
+"""What would explain [Koziarski]'s Figs. 14-15? Plastic slip (Psi > 1) against a pressure-dependent mu
 (issue 10, acceptance 5; the findings are docs/findings-fig14.md).
 
     python experiments/fig14_study.py [-o out/fig14_study] [--repeats 20]

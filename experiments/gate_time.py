@@ -1,9 +1,9 @@
 """What accuracy costs in the lab: one stand-A operating point from raw counts and bridge voltages to
 mu_T with its uncertainty budget, and the uncertainty of l/a and mu_T versus the gate time.
 
-    /work/venv/bin/python experiments/gate_time.py [--out DIR] [--model kinematic|rigid]
+    python experiments/gate_time.py [--out DIR] [--model kinematic|rigid]
 
-The paper (seed 000, 3.1.2) promises "arbitrarily high accuracy ... provided that measurement time was
+The paper ([Koziarski] section 3.1.2) promises "arbitrarily high accuracy ... provided that measurement time was
 sufficiently long". This script measures how true that is on the digital twin of stand A
 (rig.stands.yoke, quasi-static drive, instruments from sensors/ with noise and the calibration
 weights' errors on): for each gate time T it simulates the point, reduces it (rig.reduction) and

@@ -1,4 +1,4 @@
-"""Contact characteristics nu_T, nu_v, nu_0 versus alpha' (the kind of seed 000 Figs. 3-7).
+"""Contact characteristics nu_T, nu_v, nu_0 versus alpha' (the kind of [Koziarski] Figs. 3-7).
 
 ``sweep`` evaluates every requested model over a log-spaced alpha' range for each contact
 (shape, b/a) and rolling point; ``plot`` draws them with the models overlaid. Dimensionless
@@ -49,7 +49,7 @@ def sweep(
     """One row per (case, model or variant, alpha'): the columns of COLUMNS.
 
     ``effects`` apply to the kinematic model in ``models``; ``variants`` {label: effects} add
-    kinematic-model runs with other effects (seed 000 Figs. 4-7 switch Psi, mu0/mu and surface
+    kinematic-model runs with other effects ([Koziarski] Figs. 4-7 switch Psi, mu0/mu and surface
     inertia on one at a time); ``progress(k, total)`` is called per row.
     """
     runs = [(model, "", dict(effects or {}) if model == "kinematic" else {}) for model in models]

@@ -1,9 +1,9 @@
-"""Oscillating rolling contacts (seed 002): frictional work density W = mu u p (eq. 16) and the
+"""Oscillating rolling contacts ([Oscillating]): frictional work density W = mu u p (eq. 16) and the
 stroke ratio e = x/2b (eq. 15), computed with the transient grid model (rig.contact.transient).
 
 An ``OscillatingContact`` couples the dimensionless contact (shape, b/a, alpha', rolling point)
 with its physical scale (mu, p0, a, Kalker's combined G), so that work densities come out in J/m^2
-and slip paths in m. Two sources are provided: the ball-raceway contact of seed 002's FAG 7208
+and slip paths in m. Two sources are provided: the ball-raceway contact of [Oscillating]'s FAG 7208
 bearing (Tables 1-2) and stand B's roller under its earlier swinging drive.
 
 ``amplitude_sweep`` runs two cycles per stroke ratio and keeps the second (the first starts
@@ -93,7 +93,7 @@ class OscillatingContact:
         cls, bearing: BearingGeometry, ring: Ring, force_N: float, mu: float,
         assumption: KinematicAssumption = KinematicAssumption.K3,
     ) -> OscillatingContact:
-        """A ball on a raceway of an oscillating bearing (seed 002), the other ring held still.
+        """A ball on a raceway of an oscillating bearing ([Oscillating]), the other ring held still.
 
         alpha' from eq. (21) with v/w0 = (rolling speed)/(spin) at the contact (S4-S11), the
         rolling point at the contact centre; stroke per radian from the kinematic assumption.
@@ -118,7 +118,7 @@ class OscillatingContact:
 
     @classmethod
     def disc_roller(cls, normal_force_N: float, mu: float) -> OscillatingContact:
-        """Stand B's roller under its earlier swinging drive (seed 000 3.2.2, seed notes 4.2).
+        """Stand B's roller under its earlier swinging drive ([Koziarski] section 3.2.2, Equations §4.2).
 
         Line contact of the rubber-lined roller (d = 125 mm, 2a = 8 mm) on the PMMA disc; the
         disc is geared to the roller, so the spin follows the rolling with v/w0 = R_c and the
@@ -175,7 +175,7 @@ def plateau_onset(table: pd.DataFrame, column: str = "max_work_J_m2") -> float:
     least squares over all points, e_k scanned over the swept range (0.001 resolution).
 
     A two-point secant would hang on the noise of single points; the fit uses them all
-    (tests/test_oscillation.py: 0.94-1.06 for seed 002's contact over grids n = 16-32).
+    (tests/test_oscillation.py: 0.94-1.06 for [Oscillating]'s contact over grids n = 16-32).
     """
     e = table["stroke_ratio"].to_numpy(dtype=float)
     w = table[column].to_numpy(dtype=float)
@@ -201,7 +201,7 @@ def plot_sweep(table: pd.DataFrame, path: Path, title: str) -> Path:
     ax_u.plot(table["stroke_ratio"], table["max_slip_lengthwise_m"] * 1e6, "--", label="lengthwise")
     ax_u.plot(table["stroke_ratio"], table["max_slip_crosswise_m"] * 1e6, ":", label="crosswise")
     ax_u.set_ylabel(r"max slip path per cycle [$\mu$m]")
-    ax_u.set_xlabel("stroke ratio e = x/2b (seed 002, eq. 15)")
+    ax_u.set_xlabel("stroke ratio e = x/2b ([Oscillating], eq. 15)")
     ax_u.legend(fontsize=8)
     for ax in (ax_w, ax_u):
         for e, style in ((1.0, "-"), (1.5, "--")):

@@ -1,4 +1,4 @@
-"""Stand-level kinematics of a friction-wheel pair: eqs. (1), (29)-(32) and (36) of seed 000.
+"""Stand-level kinematics of a friction-wheel pair: eqs. (1), (29)-(32) and (36) of [Koziarski].
 
 The one place for these relations: the reduction (rig.reduction) and the stand simulators
 (rig.stands.yoke.contact_forces, steady_state) import them from here. Units: angular speeds
@@ -6,7 +6,7 @@ The one place for these relations: the reduction (rig.reduction) and the stand s
 scalar input gives Python floats (the fast path of the ODE right-hand sides and the reduction),
 array input gives arrays.
 
-Geometry and signs (seed notes 1.1, 1.2 last paragraph, 2): the contact plane has x along the
+Geometry and signs (Equations §1.1, 1.2 last paragraph, 2): the contact plane has x along the
 rolling direction and y along the contact line, origin at the contact centre O. The axis of
 wheel k pierces the contact plane at A_k = (x_k, y_k); its angular velocity has the component
 w0k along the contact normal. Both surfaces pass the contact in +x, so for wheel axes on
@@ -15,7 +15,7 @@ common frame. We carry them as the *signed speeds* w01 = w1 sin(alpha1) and w02 
 component of wheel 2 in that frame), so that
 
     spin          w0 = w01 + w02                              eq. (1), opposite-side axes
-    rolling point C  = (w01 A1 + w02 A2) / (w01 + w02)        weighted centroid, seed notes 1.2
+    rolling point C  = (w01 A1 + w02 A2) / (w01 + w02)        weighted centroid, Equations §1.2
 
 and the rigid slip of wheel 1 relative to wheel 2 is w0 (-(y - l), x - c), the convention of
 rig.contact. With stand A's A1 = (0, l1), A2 = (Delta h, l2) (l2 < 0 signed) and
@@ -44,7 +44,7 @@ class SpinTooSmallError(ParameterError):
 
 
 class AxisSides(Enum):
-    """Where the two wheel axes lie relative to the contact (seed notes 1.2)."""
+    """Where the two wheel axes lie relative to the contact (Equations §1.2)."""
 
     OPPOSITE = "opposite"  # stand A: "axes situated on the opposite sides of the contact area"
     SAME = "same"  # e.g. a disc driving an inner cone: the normal components subtract
@@ -86,7 +86,7 @@ def pair_spin(omega_1, alpha_1, omega_2, alpha_2, sides: AxisSides):
 def centroid_moments(w01, w02, pierce_1: tuple[float, float], pierce_2: tuple[float, float]):
     """w0 C = w01 A1 + w02 A2 as (w0 c, w0 l) [m rad/s]: the numerator of the weighted centroid.
 
-    seed notes 1.2; eqs. (29) and (31) are its y and x components divided by w0 = w01 + w02.
+    Equations §1.2; eqs. (29) and (31) are its y and x components divided by w0 = w01 + w02.
     Finite for any speeds (also w0 = 0, where C itself is at infinity). w01, w02 [rad/s];
     pierce_k = (x_k, y_k) [m] (or in any length unit, e.g. a).
     """
@@ -161,7 +161,7 @@ def c_for_l(l, l1: float, l2: float, delta_h: float):
 
 
 def dl_dratio(ratio, alpha_1: float, l1: float, l2: float):
-    """Sensitivity dl/di_k = -sin(alpha1)(l1 - l2)/(sin(alpha1) + i_k)^2 [m] (seed notes 2).
+    """Sensitivity dl/di_k = -sin(alpha1)(l1 - l2)/(sin(alpha1) + i_k)^2 [m] (Equations §2).
 
     Stand A at l = 0: about -28.5 mm; used for the counting resolution of l.
     """

@@ -3,7 +3,7 @@
 Noise and zero drift are input-referred [V at the amplifier input] - the way bridge amplifiers
 are specified - and are optional components: ``None`` means off (never built, never called).
 The bandwidth is taken as much higher than the signals of the stands (the instruments are read
-slower than the contact relaxation, seed notes 4.2), so no filter is modelled [assumed].
+slower than the contact relaxation, Equations §4.2), so no filter is modelled [assumed].
 """
 
 from __future__ import annotations

@@ -3,7 +3,7 @@
 The brake's reaction moment is taken by an arm of length r and balanced by a pendulum whose
 deflection is read on a scale graduated in force at the arm; the reading is the force at the
 arm rounded to the scale step times the arm. The paper gives an accuracy of 0.049 N (5 gf) at
-the arm "corresponding to" 0.0196 N m, hence the arm r = 0.0196/0.049 = 0.400 m (seed notes 3.1).
+the arm "corresponding to" 0.0196 N m, hence the arm r = 0.0196/0.049 = 0.400 m (Equations §3.1).
 
 How to read "accuracy 0.049 N" is a stated parameter, the scale step ``resolution_N`` [N]:
 * as a +-limit of the reading error (the default, conservative): step 2 x 0.049 = 0.098 N, so the

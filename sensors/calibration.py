@@ -1,6 +1,6 @@
 """Calibration with known weights through a lever: least-squares sensitivity and offset.
 
-Procedure (stand A, seed 000 3.1.1; stand B "calibrated using special levers", 3.2): weight
+Procedure (stand A, [Koziarski] section 3.1.1; stand B "calibrated using special levers", 3.2): weight
 pieces are stacked one by one on a lever and taken off again (loads 0, w1, w1+w2, ..., all,
 ..., 0); at each step the instrument is read for ``dwell_s`` and the readings averaged. The
 straight line  reading = s Q + o  (s: sensitivity [V per unit of Q], o: offset [V]) is fitted
@@ -71,7 +71,7 @@ class Lever:
 
 STAND_A_LEVER = Lever(weight_arm_m=0.102, sensor_arm_m=0.102, quantity_arm_m=0.0425)
 """Stand A yoke: weights and dynamometer 10 at 102 mm from axle 4, F_y at R_v = 42.5 mm
-(text; "42.2" is a misprint of 42.5, seed notes 3.1). Q = F_y = W 102/42.5."""
+(text; "42.2" is a misprint of 42.5, Equations §3.1). Q = F_y = W 102/42.5."""
 
 
 @dataclass(frozen=True)

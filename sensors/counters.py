@@ -1,12 +1,11 @@
 """Speed counters of stand A: lamp + photocell, pulse amplifier, electronic counter, common gate timer.
 
-Chain (seed 000 3.1.1, Fig. 9: discs 13/14, photocells with lamps 15/16, pulse amplifiers 20/21,
+Chain ([Koziarski] section 3.1.1, Fig. 9: discs 13/14, photocells with lamps 15/16, pulse amplifiers 20/21,
 counters 18/19, timer 22): each mark passing a photocell gives a light pulse of amplitude
 ``pulse_amplitude_V``; the pulse amplifier multiplies it by ``gain`` and its discriminator
 emits one counting pulse when the amplified amplitude reaches ``threshold_V``; a counter adds
 the counting pulses while its gate is open. One timer opens and closes *all* counters at the
-same instants, so the counts N_k share the gate time T and omega_k = 2 pi N_k/(z_k T) (seed
-notes 2). With the amplitude-noise effect off every pulse is counted (the nominal amplified
+same instants, so the counts N_k share the gate time T and omega_k = 2 pi N_k/(z_k T) (Equations §2). With the amplitude-noise effect off every pulse is counted (the nominal amplified
 amplitude must reach the threshold, checked on construction); with it on, a pulse whose noisy
 amplitude falls below the threshold is missed. Noise never creates extra pulses.
 
@@ -124,7 +123,7 @@ class CountReading:
     gate_time_s: float
 
     def angular_speed_rad_s(self, channel: str) -> float:
-        """Mean angular speed over the gate, 2 pi N/(z T) [rad/s] (seed notes 2)."""
+        """Mean angular speed over the gate, 2 pi N/(z T) [rad/s] (Equations §2)."""
         if channel not in self.counts:
             raise InstrumentParameterError("channel", channel, "one of " + ", ".join(sorted(self.counts)))
         return 2.0 * np.pi * self.counts[channel] / (self.marks[channel] * self.gate_time_s)

@@ -1,8 +1,8 @@
 """Strain-gauge dynamometer: force [N] -> strain -> Wheatstone bridge -> amplifier -> ADC codes.
 
 Stand A's dynamometer 10 holds the yoke of wheel 2 at 102 mm from the yoke axle 4 and so
-measures F_y through the lever 102 mm / 42.5 mm (seed notes 2, eq. (33), and 3.1); stand B's
-dynamometers 5 hold bearing 4 of the disc shaft and measure F_T and F_V (seed notes 3.2). The
+measures F_y through the lever 102 mm / 42.5 mm (Equations §2, eq. (33), and 3.1); stand B's
+dynamometers 5 hold bearing 4 of the disc shaft and measure F_T and F_V (Equations §3.2). The
 instrument here is the transducer alone: its input is the force on the dynamometer itself [N];
 lever ratios belong to the calibration (:mod:`sensors.calibration`) and to the stands.
 
@@ -10,7 +10,7 @@ The elastic element is linear: strain = strain_per_newton * force. The values of
 constants are not in the paper; the defaults below are assumed (one place per stand) and
 chosen so that the largest expected force stays inside the +-10 V converter range:
 
-* stand A: F_y <= ~20 N at 385 N (seed notes 3.1: F_y ~ 4 N at 96 N, ~19 N at 385 N), i.e.
+* stand A: F_y <= ~20 N at 385 N (Equations §3.1: F_y ~ 4 N at 96 N, ~19 N at 385 N), i.e.
   F_dyn = F_y 42.5/102 <= ~8 N; 50 ue/N (1000 ue at 20 N), full bridge, k = 2, 5 V
   -> 0.5 mV/N, gain 500 -> 0.25 V/N, full scale ~ +-40 N;
 * stand B: |F_T| <= mu F_N = 0.8 * 144 N ~ 115 N; 5 ue/N, full bridge -> 50 uV/N, gain 500

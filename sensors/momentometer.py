@@ -1,15 +1,15 @@
 """Torque meter ("momentometer" 8 of stand B): torsion shaft with strain gauges -> bridge -> amplifier.
 
 A solid circular shaft of diameter d carries the torque T [N m] between the clutch 9 and the
-disc shaft 3 (seed notes 3.2, 4.2). Elastic torsion: surface shear stress tau = 16 T/(pi d^3),
+disc shaft 3 (Equations §3.2, 4.2). Elastic torsion: surface shear stress tau = 16 T/(pi d^3),
 shear strain gamma = tau/G; gauges at +-45 deg to the axis see normal strains +-gamma/2 =
 +-8 T/(pi d^3 G), wired as a full bridge (two +45, two -45 gauges) so that bending and axial
 load cancel. The output goes to the signal recorder (:mod:`sensors.recorder`), which samples
 and digitises it. The shaft's torsional stiffness G pi d^4/(32 L) is the loop compliance k_m
-of the stand-B drive model (seed notes 4.2: 2e3...1e4 N m/rad).
+of the stand-B drive model (Equations §4.2: 2e3...1e4 N m/rad).
 
 Defaults (assumed, none is in the paper): steel shaft d = 12 mm, G = 80 GPa, measuring length
-L = 50 mm -> k_m = 3.26e3 N m/rad (inside the seed-notes range), 368 ue at 20 N m; full bridge,
+L = 50 mm -> k_m = 3.26e3 N m/rad (inside the Equations page's range), 368 ue at 20 N m; full bridge,
 k = 2, 5 V; amplifier gain 2000 -> 0.368 V/(N m), full scale of a +-10 V converter ~ +-27 N m,
 above the largest expected |T_Mo| ~ R_c mu F_N ~ 19 N m. Noise and drift as the dynamometers.
 """

@@ -1,7 +1,7 @@
 """Signal recorder (stand B's MC 201A): samples analogue channels at a fixed rate and digitises them.
 
 Stand B's dynamometers 5 and momentometer 8 feed bridges (AR 405C) whose outputs the recorder
-stores on disc (seed 000, 3.2). Here the recorder takes the *true* quantity as a sampled time
+stores on disc ([Koziarski] section 3.2). Here the recorder takes the *true* quantity as a sampled time
 series (t [s], value), evaluates it at its own sample instants t0 + k/f_s by linear
 interpolation, passes it through the transducer (anything with ``volts(t, value) -> V``, e.g.
 :class:`~sensors.dynamometer.Dynamometer`, :class:`~sensors.momentometer.Momentometer`) - so
@@ -9,7 +9,7 @@ noise and drift are drawn at the recorder's sample instants - and digitises with
 Channels recorded with one recorder over the same span share the sample instants.
 
 Defaults (assumed; the MC 201A's data are not known): 500 Hz, faster than the shortest contact
-relaxation time 2b/v ~ 8.5 ms of seed notes 3.2 needs for a few samples per time constant, and
+relaxation time 2b/v ~ 8.5 ms of Equations §3.2 needs for a few samples per time constant, and
 a 16-bit +-10 V converter. No anti-alias filter is modelled (the stand signals are smooth).
 """
 

@@ -24,7 +24,7 @@ import numpy as np
 from sensors import validate
 
 DEFAULT_MARKS = 60
-"""Marks per disc [1] (assumed, seed notes 2: 60 marks at 240 rpm give 240 pulses/s; the paper
+"""Marks per disc [1] (assumed, Equations §2: 60 marks at 240 rpm give 240 pulses/s; the paper
 does not give the number)."""
 
 

@@ -120,7 +120,7 @@ def test_from_rig_contact_import_solve_gives_the_function():
 
     assert callable(solve) and solve is same
     assert solve("rigid", shape="ellipse", b_over_a=1.0, alpha=0.0, c_over_a=0.0, l_over_a=0.0,
-                 poisson=0.3, n=64).nu_0 == pytest.approx(0.58905, abs=2e-3)  # 3 pi/16, seed notes 1.10(a)
+                 poisson=0.3, n=64).nu_0 == pytest.approx(0.58905, abs=2e-3)  # 3 pi/16, Equations §1.10(a)
 
 
 def test_the_scene_format_and_the_campaigns_name_the_same_figures():

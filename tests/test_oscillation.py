@@ -1,4 +1,4 @@
-"""Oscillating contacts of seed 002 (issue 6, acceptance 2) with the FAG 7208 inner-ring contact."""
+"""Oscillating contacts of [Oscillating] (issue 6, acceptance 2) with the FAG 7208 inner-ring contact."""
 
 import numpy as np
 import pandas as pd
@@ -21,7 +21,7 @@ def sweeps():
 def test_the_contact_of_seed_002_is_near_sliding():
     contact = OscillatingContact.ball_raceway(FAG_7208, Ring.INNER, 1270.0, 0.1)
     assert 0.5 < contact.alpha < 1.5, "alpha' = 40 mu p0 v/(a E w0) with v/w0 = r_i/sin(40 deg)"
-    assert contact.amplitude_deg(1.0) == pytest.approx(1.42, abs=0.01), "e = 1 under K3 (seed notes 5.1)"
+    assert contact.amplitude_deg(1.0) == pytest.approx(1.42, abs=0.01), "e = 1 under K3 (Equations §5.1)"
 
 
 def test_work_density_grows_below_e_1_then_plateaus(sweeps):

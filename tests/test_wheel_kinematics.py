@@ -1,4 +1,4 @@
-"""Stand-level kinematics (rig.wheel_kinematics) against the seed notes' arithmetic (sections 1.2, 2, 3)."""
+"""Stand-level kinematics (rig.wheel_kinematics) against the Equations page's arithmetic (sections 1.2, 2, 3)."""
 
 from __future__ import annotations
 
@@ -24,7 +24,7 @@ from rig.wheel_kinematics import (
     stand_b_twist,
 )
 
-# Seed notes 3.1 "Derived", stand A at l = 0 (four-digit hand numbers).
+# Equations §3.1 "Derived", stand A at l = 0 (four-digit hand numbers).
 IK, ALPHA1, L1, L2, DH = 0.8115, math.radians(73.4), 42.76e-3, -50.50e-3, 1.06e-3
 
 
@@ -49,7 +49,7 @@ def test_spin_of_stand_a_is_1_77_w1():
 
 
 def test_dl_dratio_is_minus_28_5_mm_and_matches_a_difference():
-    assert dl_dratio(IK, ALPHA1, L1, L2) == pytest.approx(-28.5e-3, abs=0.1e-3)  # seed notes 2
+    assert dl_dratio(IK, ALPHA1, L1, L2) == pytest.approx(-28.5e-3, abs=0.1e-3)  # Equations §2
     h = 1e-6
     def l_of(ratio):
         return stand_a_rolling_point(ratio, ALPHA1, L1, L2, DH)[1]
@@ -71,7 +71,7 @@ def test_ratio_for_l_inverts_eq_30(l_over_a, dh):
     c, l = stand_a_rolling_point(ratio, ALPHA1, L1, L2, dh)
     assert l == pytest.approx(l_over_a * a, abs=1e-15)
     assert c == pytest.approx(c_for_l(l, L1, L2, dh), abs=1e-15)
-    assert 0.0 <= c <= dh  # seed notes 2: c <= Delta h always
+    assert 0.0 <= c <= dh  # Equations §2: c <= Delta h always
 
 
 def test_weighted_centroid_general_points_and_rotation_about_c():
@@ -100,7 +100,7 @@ def test_ratio_for_l_outside_the_axes_raises():
 
 def test_stand_b_eq_36():
     e = 70.2e-3
-    assert stand_b_offset(e, math.radians(6.54)) == pytest.approx(8.0e-3, abs=5e-6)  # seed notes 3.2
+    assert stand_b_offset(e, math.radians(6.54)) == pytest.approx(8.0e-3, abs=5e-6)  # Equations §3.2
     assert stand_b_twist(e, 8.0e-3) == pytest.approx(math.radians(6.54), abs=1e-4)
     assert stand_b_offset(e, stand_b_twist(e, -8e-3)) == pytest.approx(-8e-3, rel=1e-12)
     with pytest.raises(ParameterError, match="c = "):

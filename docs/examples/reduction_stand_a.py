@@ -18,7 +18,7 @@ from rig.reduction import stand_a
 from rig.reduction.geometry import StandAGeometry
 from rig.reduction.readings import ForceCalibration, Measured
 
-GEOMETRY = StandAGeometry()  # seed-notes defaults, Delta h = 1.06 mm
+GEOMETRY = StandAGeometry()  # the Equations page's defaults, Delta h = 1.06 mm
 NORMAL_FORCE = 96.2  # [N]
 B_OVER_A = GEOMETRY.b_over_a(NORMAL_FORCE)  # 1.0
 READINGS = stand_a.StandAReadings(

@@ -1,4 +1,4 @@
-"""Tutorial step 1: Coulomb's "slowly increasing force" experiment (seed 001 slides 13 and 17).
+"""Tutorial step 1: Coulomb's "slowly increasing force" experiment ([Zhao] slides 13 and 17).
 
 A 2 kg steel block on a steel plane is pulled by F = k t. It sticks (T = F) until F reaches
 mu_s N, then the micro-welds shear, T drops to mu_k N and the block accelerates.

@@ -1,7 +1,7 @@
-"""Tutorial step 2: a body on an inclined plane (seed 001 slides 15-16 and 20-21).
+"""Tutorial step 2: a body on an inclined plane ([Zhao] slides 15-16 and 20-21).
 
 At rest iff tan(alpha) <= mu_s, whatever the mass; sliding down, a = g (sin(alpha) - mu_k cos(alpha)),
-less than the frictionless g sin(alpha). The left panel places the pairs of seed 001's table on
+less than the frictionless g sin(alpha). The left panel places the pairs of [Zhao]'s table on
 the rest/slide map; the right panel shows the acceleration against the inclination.
 
     python experiments/tutorial/step02_inclined_plane.py [-o out/tutorial]

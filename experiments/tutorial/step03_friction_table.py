@@ -1,4 +1,4 @@
-"""Tutorial step 3: seed 001's table of friction coefficients, and where the slides contradict it.
+"""Tutorial step 3: [Zhao]'s table of friction coefficients, and where the slides contradict it.
 
 Static coefficients of slide 19 (dry and clean, lubricated, wet) as bars, slide 18's quoted
 ranges of mu_s and mu_k on top; the pairs where the two slides cannot both be right
@@ -90,7 +90,7 @@ def main(argv: list[str] | None = None) -> list[Path]:
     ax.legend(unique.values(), unique.keys(), fontsize=8, loc="upper right")
     ax.set_yticks(y, labels, fontsize=8)
     ax.set(xlabel=r"static friction coefficient $\mu_s$ [1]", xlim=(0, 1.6),
-           title="Approximate coefficients of friction (seed 001, slides 18-19)")
+           title="Approximate coefficients of friction ([Zhao], slides 18-19)")
     top = ax.secondary_xaxis("top", functions=(lambda m: np.degrees(np.arctan(m)), lambda d: np.tan(np.radians(d))))
     top.set_xlabel(r"critical inclination $\alpha^* = \arctan\mu_s$ [deg]")
     ax.grid(axis="x", alpha=0.3)

@@ -1,6 +1,6 @@
 """Tutorial step 4: a wheel pulled at its centre - rolling without slipping, then with slipping.
 
-Seed 001 slides 22-24 and 33-40: while |T| <= mu_s N (ineq. 5.10) the contact point is the
+[Zhao] slides 22-24 and 33-40: while |T| <= mu_s N (ineq. 5.10) the contact point is the
 instantaneous centre (v = omega r) and a = (F - f_v N)/(m + J/r^2), T = J a/r^2 + f_v N;
 beyond F_max the wheel slips, T = mu_k N and the centre outruns the rim (a > omega' r).
 A solid rubber-tyred disc on concrete: mu_s = 1.0 (slide 19, concrete-rubber dry).

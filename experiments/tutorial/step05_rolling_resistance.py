@@ -1,6 +1,6 @@
 """Tutorial step 5: rolling resistance - the normal reaction shifted forward by u = f_v r.
 
-Seed 001 slides 32-36: N acts a distance u ahead of the centre and resists with the moment
+[Zhao] slides 32-36: N acts a distance u ahead of the centre and resists with the moment
 N u; the power lost is N u omega = f_v N v; f_v is measured by pulling a wheel at constant
 speed (the pull then equals f_v N). The right panel simulates that measurement with a noisy
 force gauge (seeded) and recovers f_v with its standard uncertainty.

@@ -1,6 +1,6 @@
 """Tutorial step 6: where rolling resistance comes from - hysteresis of a soft disc on a rigid plane.
 
-Seed 001 slides 26-32 with our model (rig.teaching.hysteresis): the disc's rim is a layer of
+[Zhao] slides 26-32 with our model (rig.teaching.hysteresis): the disc's rim is a layer of
 Kelvin-Voigt elements. Elastic (v = 0): symmetric pressure, loading and unloading on one line,
 no loss. Viscoelastic: the front carries more pressure, the p-epsilon path becomes a loop whose
 area is the energy lost per unit volume and pass, the resultant N moves forward by u, and

@@ -1,10 +1,10 @@
-"""Tutorial step 7: spin - the contact also turns about its normal (seed 000 eqs. 1 and 7).
+"""Tutorial step 7: spin - the contact also turns about its normal ([Koziarski] eqs. 1 and 7).
 
 Two wheels whose axes are inclined to the contact plane spin relative to each other with
 w0 = w1 sin(alpha1) + w2 sin(alpha2) (eq. 1; axes on opposite sides, as on stand A). The rigid
 slip is then a rotation w0 about the rolling point C (eq. 7): zero at C, growing with the
 distance from it. In full sliding the friction opposes the slip everywhere and the contact
-carries a pivoting moment, nu_0 = 3 pi/16 for a Hertz circle with C at its centre (seed notes
+carries a pivoting moment, nu_0 = 3 pi/16 for a Hertz circle with C at its centre (the Equations page
 1.10); an elastic contact (track deformability alpha', eq. 21) adheres near C, loses pivoting
 moment, and - the paper's theme - produces a lateral force F_y from spin alone.
 
@@ -32,7 +32,7 @@ from rig.wheel_kinematics import AxisSides, pair_spin, ratio_for_l
 STEM = "step07_spin"
 POISSON = 0.3  # [1]
 ALPHA_MAP = 30.0  # alpha' of the traction map (adhesion near C) [1]
-OMEGA_1 = 25.13  # stand A wheel 1, 240 rpm [rad/s] (seed notes 3.1)
+OMEGA_1 = 25.13  # stand A wheel 1, 240 rpm [rad/s] (Equations §3.1)
 
 
 def arguments(argv: list[str] | None) -> argparse.Namespace:

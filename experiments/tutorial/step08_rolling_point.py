@@ -1,6 +1,6 @@
 """Tutorial step 8: the rolling point C moves - and the force components follow (eqs. 26-28).
 
-Stand A's contact is a line contact with b/a = 1 at 96.2 N and alpha' ~ 0.64 (seed notes 3.1:
+Stand A's contact is a line contact with b/a = 1 at 96.2 N and alpha' ~ 0.64 (Equations §3.1:
 nearly full sliding). Moving C = (c, l) away from the centre turns the rigid slip (a rotation
 about C) into a nearly uniform slide: the peripheral force nu_T (C along the contact line, l),
 the lateral force nu_v (C across it, c) saturate at 1, the pivoting moment about C grows like
@@ -31,11 +31,11 @@ from rig.reduction.geometry import StandAGeometry
 from rig.wheel_kinematics import ratio_for_l
 
 STEM = "step08_rolling_point"
-POISSON, MU, B_OVER_A = 0.3, 0.4, 1.0  # laminate on steel, stand A at 96.2 N (seed notes 3.1)
+POISSON, MU, B_OVER_A = 0.3, 0.4, 1.0  # laminate on steel, stand A at 96.2 N (Equations §3.1)
 L_VALUES = np.linspace(-3.0, 3.0, 25)  # l/a, C along the contact line (c = 0)
 C_VALUES = np.linspace(0.0, 2.0, 11)  # c/a, C across it (l = 0)
 TEX = {"nu_T": r"$\nu_T$", "nu_v": r"$\nu_v$", "nu_0": r"$\nu_0$"}
-ALPHA_STIFF = 10.0  # a stiffer contact, the low end of stand B's alpha' (seed notes 0: 10.6-42.6) [1]
+ALPHA_STIFF = 10.0  # a stiffer contact, the low end of stand B's alpha' (Equations §0: 10.6-42.6) [1]
 MAP_POINTS = ((0.0, 0.5), (0.4, 2.5))  # (c/a, l/a) of the two slip maps
 
 

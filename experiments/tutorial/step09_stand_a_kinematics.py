@@ -2,7 +2,7 @@
 
 On stand A the axes of wheel 1 (steel, cone angle alpha1) and wheel 2 (laminate disc) pierce the
 contact plane at A1 = (0, l1) and A2 = (Delta h, l2), on opposite sides of the contact. The
-rolling point is their weighted centroid (seed notes 1.2), so the speed ratio i_k = w2/w1 sets
+rolling point is their weighted centroid (Equations §1.2), so the speed ratio i_k = w2/w1 sets
 l (eq. 30) and, with the yoke shifted by Delta h, c (eqs. 31-32). The brake on wheel 2 changes
 i_k; the counters measure it: i_k = N2 z1/(N1 z2) over a common gate. Right panel: the +-1
 count quantisation of the counters makes l/a uncertain - and longer gates help.
@@ -29,7 +29,7 @@ from rig.wheel_kinematics import dl_dratio, ratio_for_l, stand_a_rolling_point
 
 STEM = "step09_stand_a_kinematics"
 GEOMETRY = StandAGeometry()
-OMEGA_1 = 25.13  # 240 rpm [rad/s] (seed notes 3.1)
+OMEGA_1 = 25.13  # 240 rpm [rad/s] (Equations §3.1)
 MU, B_OVER_A = 0.4, 1.0  # stand A at 96.2 N [1]
 MARKS = 60  # strobe-disc marks, both wheels [assumed, as rig.stands.yoke]
 GATES_S = (1.0, 2.0, 4.0, 8.0, 17.0, 30.0, 60.0)  # gate times tried [s]

@@ -1,4 +1,4 @@
-"""Tutorial step 10: the paper's measurement method on stand A (seed 000 section 3.1.2, eqs. 29-35).
+"""Tutorial step 10: the paper's measurement method on stand A ([Koziarski] section 3.1.2, eqs. 29-35).
 
 Runs the stand-A scene (default: the built-in `default` scene, as `rig run` does): the brake
 moment T2 on wheel 2 moves the rolling point along the contact line; at each set-point the

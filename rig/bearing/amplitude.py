@@ -1,6 +1,6 @@
 """Oscillation amplitudes of a ball bearing: Harris (S1)-(S3) and the stroke ratio e = x/2b (S15).
 
-Seed 002 sec. 2.2.3 and 4. Angles [rad] (use math.degrees for the paper's degrees), lengths [m].
+[Oscillating] sec. 2.2.3 and 4. Angles [rad] (use math.degrees for the paper's degrees), lengths [m].
 theta is the **double** amplitude (peak to peak) of the oscillating ring relative to the other.
 Reconstruction [R]: the inner ring oscillates against a fixed outer ring; then the cage turns
 by theta (1 - gamma)/2 (eq. (S7) with w_OR = 0), i.e. by theta (1 - gamma)/2 relative to the
@@ -13,7 +13,7 @@ the upper sign (1 - gamma) belongs to the outer raceway, the lower (1 + gamma) t
 * (S3) theta_dith = 720 deg b/(pi d_m (1 -/+ gamma)): the *single* amplitude at which the
   ball-centre travel over a full stroke equals the contact width 2b;
 * (S15) e = x/(2b), x = distance rolled over the stroke theta under one of the kinematic
-  assumptions K1..K4 of seed notes 5.1 (default K3, the rolled track length on the raceway).
+  assumptions K1..K4 of Equations §5.1 (default K3, the rolled track length on the raceway).
 """
 
 from __future__ import annotations
@@ -29,7 +29,7 @@ MAX_DOUBLE_AMPLITUDE = 2.0 * math.pi  # a full revolution per stroke [rad]
 
 
 class KinematicAssumption(Enum):
-    """How far the contact travels, x, for a double amplitude theta (seed notes 5.1).
+    """How far the contact travels, x, for a double amplitude theta (Equations §5.1).
 
     K1: ball-centre travel relative to the outer ring, x = theta d_m (1 - gamma)/4 (= Harris' "-");
     K2: ball-centre travel relative to the inner ring, x = theta d_m (1 + gamma)/4 (= Harris' "+");

@@ -1,9 +1,9 @@
 """Geometry of an angular-contact ball bearing and the Hertz contact of a ball on a raceway.
 
-Seed 002 (Schwack et al. 2021), Table 1 and eq. (S8); Hertz point contact from rig.contact.hertz
-(seed notes 5.1). Lengths [m], angles [rad], forces [N], pressures [Pa].
+[Oscillating] (Schwack et al. 2021), Table 1 and eq. (S8); Hertz point contact from rig.contact.hertz
+(Equations §5.1). Lengths [m], angles [rad], forces [N], pressures [Pa].
 
-Choices and readings (seed notes 5.1):
+Choices and readings (Equations §5.1):
 * pitch diameter d_m = (D + d)/2 [A] (Table 1 gives only the bore d and outside diameter D);
 * osculation = ball radius / groove radius [R] (r_groove = r_RE/osculation); the alternative
   reading 2 - r_groove/r_RE is not used;
@@ -11,7 +11,7 @@ Choices and readings (seed notes 5.1):
   ball 1/r_RE in both directions; raceway in the rolling direction +cos(alpha)/r_i (inner,
   convex) and -cos(alpha)/r_o (outer, concave), i.e. (2/D_w) gamma/(1 -/+ gamma); across the
   groove -1/r_groove (concave). So the contact ellipse is long across the groove (a, along y)
-  and narrow in the rolling direction (b, along x), as in seed 002.
+  and narrow in the rolling direction (b, along x), as in [Oscillating].
 """
 
 from __future__ import annotations
@@ -62,7 +62,7 @@ class BearingGeometry:
 
     @property
     def pitch_diameter(self) -> float:
-        """d_m = (D + d)/2 [m] (assumption, seed notes 5.1)."""
+        """d_m = (D + d)/2 [m] (assumption, Equations §5.1)."""
         return 0.5 * (self.outer_diameter + self.inner_diameter)
 
     @property
@@ -77,7 +77,7 @@ class BearingGeometry:
 
     @property
     def gamma(self) -> float:
-        """gamma = D_w cos(alpha)/d_m (dimensionless), seed 002 below eq. (S3)."""
+        """gamma = D_w cos(alpha)/d_m (dimensionless), [Oscillating] below eq. (S3)."""
         return self.ball_diameter * math.cos(self.contact_angle) / self.pitch_diameter
 
     def contact_radius(self, ring: Ring) -> float:

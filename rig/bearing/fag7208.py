@@ -1,4 +1,4 @@
-"""The FAG 7208 angular-contact ball bearing of seed 002 (Table 1) and its load cases (Table 2).
+"""The FAG 7208 angular-contact ball bearing of [Oscillating] (Table 1) and its load cases (Table 2).
 
 Table 1 [T]: D = 80 mm, d = 40 mm, ball radius r_RE = 5.93 mm, contact angle 40 deg,
 osculation 96.0 % (IR) / 93.8 % (OR), steel E = 210 GPa, nu = 0.3 (text). Assumed [A]:
@@ -6,7 +6,7 @@ d_m = (D + d)/2, osculation = r_RE/r_groove (rig.bearing.ball_raceway).
 Table 2 [T]: contact force per ball and the published maximum pressures and e = 1, e = 1.5
 double amplitudes on the inner ring (from the authors' FE model). The number of balls is not
 in Table 1; the quoted theta_crit = 51.42 deg equals 720 deg/14, i.e. Z = 14 with gamma
-neglected (seed notes 5.1).
+neglected (Equations §5.1).
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ from rig.bearing.amplitude import KinematicAssumption, amplitude_for_stroke_rati
 from rig.bearing.ball_raceway import BearingGeometry, Ring, raceway_contact
 from rig.contact.materials import Material
 
-BEARING_STEEL = Material(E=210e9, nu=0.3, rho=7850.0, name="bearing steel", source="E, nu [T] seed 002; rho [A]")
+BEARING_STEEL = Material(E=210e9, nu=0.3, rho=7850.0, name="bearing steel", source="E, nu [T] [Oscillating]; rho [A]")
 
 FAG_7208 = BearingGeometry(
     outer_diameter=0.080,
@@ -32,12 +32,12 @@ FAG_7208 = BearingGeometry(
     material=BEARING_STEEL,
 )
 
-THETA_CRIT_PUBLISHED_DEG = 51.42  # seed 002 sec. 7, "out of range for this investigation"
+THETA_CRIT_PUBLISHED_DEG = 51.42  # [Oscillating] sec. 7, "out of range for this investigation"
 
 
 @dataclass(frozen=True)
 class LoadCase:
-    """One row of seed 002 Table 2: force_N per ball, published pressures [Pa] and amplitudes [deg]."""
+    """One row of [Oscillating] Table 2: force_N per ball, published pressures [Pa] and amplitudes [deg]."""
 
     force_N: float
     p_inner_Pa: float

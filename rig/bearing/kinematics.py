@@ -1,20 +1,20 @@
-"""Rigid kinematics of a ball between two raceways, eqs. (S4)-(S11) of seed 002.
+"""Rigid kinematics of a ball between two raceways, eqs. (S4)-(S11) of [Oscillating].
 
-Idealised as in seed 002 sec. 3.1: point contacts at the nominal contact angle, no slip, no
+Idealised as in [Oscillating] sec. 3.1: point contacts at the nominal contact angle, no slip, no
 elastic deformation. Angular speeds [rad/s] about the bearing axis, speeds [m/s], radii [m].
 
 * (S4), (S5) raceway surface speeds v_OR = w_OR r_o, v_IR = w_IR r_i;
 * (S6), (S7) ball-centre speed v_C = (w_OR r_o + w_IR r_i)/2, cage speed w_C = v_C/r_C;
 * (S8) r_i,o = r_C -/+ r_RE cos(alpha);
 * (S9) relative rolling velocity v_r = (w_OR - w_C) r_o (printed "w_RE" is a typo for w_C,
-  seed notes 5), equal to (S10) (w_OR - w_IR)(r_C^2 - r_RE^2 cos^2 alpha)/(2 r_C);
+  Equations §5), equal to (S10) (w_OR - w_IR)(r_C^2 - r_RE^2 cos^2 alpha)/(2 r_C);
 * (S11) ball angular speed relative to the cage w = v_r/r_RE.
 Spin at the contacts [R]: (S11) holds when the ball's rotation axis (in the cage frame) is
 perpendicular to the contact line; the ball then contributes no spin and the spin at a contact
 is the normal component of the raceway's angular velocity relative to the cage,
-w_s = (w_ring - w_C) sin(alpha) (the bearing analogue of eq. (1) of seed 000,
+w_s = (w_ring - w_C) sin(alpha) (the bearing analogue of eq. (1) of [Koziarski],
 w0 = w1 sin(alpha1) - w2 sin(alpha2)). Other ball-axis assumptions (outer-race control) give
-other spin splits; seed 002 does not fix one.
+other spin splits; [Oscillating] does not fix one.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""The paper's campaigns: figures laid out like seed 000's, with the checks each states.
+"""The paper's campaigns: figures laid out like [Koziarski]'s, with the checks each states.
 
 A stand scene names one in ``[outputs] paper_figure``; after the reduction the runner calls the
 registered function ``draw(reduced, log_path, out_dir, title) -> CampaignOutcome``: ``reduced``

@@ -1,9 +1,9 @@
-"""Stand B's campaigns, seed 000 Figs. 14 (c = 0) and 15 (c/a = -2): forces and moment versus l.
+"""Stand B's campaigns, [Koziarski] Figs. 14 (c = 0) and 15 (c/a = -2): forces and moment versus l.
 
 Layout [ours, after the brief and the paper's legend "x---x T_Mo, o---o F_T, ---- F_V"]: four
 panels versus l [mm], one colour per load - F_T [N] (markers o), F_V [N] (s), T_Mo [N m] (x)
 as in the paper, and M_C = T_Mo + R_c F_T [N m] (D), the pivoting moment the chain derives
-(seed notes 3.2). Points: the calibrated channel means of the log (rig.stands.disc_roller
+(Equations §3.2). Points: the calibrated channel means of the log (rig.stands.disc_roller
 .reduction.channel_reading; M_C from the reduced table) with error bars of +-2u (k = 2).
 Lines: the simulation's truth - the quasi-static steady state of the logged stand (rebuilt from
 the scene text in the log) on a fine l grid; the dynamic gate means equal it within the settle
@@ -12,7 +12,7 @@ logged truth. All values are in the reduction's canonical frame (forward running
 times the direction; docs/stand-b.md), so a reverse run at sigma > 0 is drawn at c/a < 0.
 
 Summary: per load the fraction of points within 2u of the truth, M_C recovered, and the
-observations of seed 000 section 3.2.3 checked with numbers (what the simulation shows) - for the
+observations of [Koziarski] section 3.2.3 checked with numbers (what the simulation shows) - for the
 run's alpha' and, from the same stand's truth (dashed lines in the figure), for the other alpha'
 option: eq. (21)'s Hertz estimate or the paper's stated range (effect paper_alpha_range,
 rig.stands.disc_roller.paper_alpha).
@@ -333,7 +333,7 @@ SLOW = "forces and moment grow much more slowly with F_N than elastic deformatio
 
 
 def paper_verdicts(points: pd.DataFrame) -> dict[str, str]:
-    """The two observations of seed 000 3.2.3 with a verdict: {statement: verdict}."""
+    """The two observations of [Koziarski] section 3.2.3 with a verdict: {statement: verdict}."""
     p = [v for c in CHANNELS for v in load_exponents(points, c).values()]
     return {RISES: _verdict_rises(load_steps(points)), SLOW: _verdict_slow(min(p, default=math.nan))}
 
@@ -344,7 +344,7 @@ def alpha_option_lines(points: pd.DataFrame, name: str, run_stand, other_stand) 
     judged with the run's u (steady_points)."""
     loads = points["normal_force_N"]
     other = steady_points(other_stand, points)
-    lines = ["alpha' options (seed notes 3.2: the paper's 100 .. 1500 vs eq. (21)'s estimate is unresolved):",
+    lines = ["alpha' options (Equations §3.2: the paper's 100 .. 1500 vs eq. (21)'s estimate is unresolved):",
              f"  this run: {alpha_option(run_stand)}; alpha' {alpha_values(run_stand, loads)}",
              f"  other, dashed lines (truth only): {alpha_option(other_stand)}; alpha' {alpha_values(other_stand, loads)}"]
     for label, frame in (("this run", points), ("other", other)):
@@ -356,7 +356,7 @@ def alpha_option_lines(points: pd.DataFrame, name: str, run_stand, other_stand) 
 
 
 def observation_lines(points: pd.DataFrame, name: str, source: str = "measured") -> list[str]:
-    """The paper's observations (seed 000 3.2.3) against what the simulation shows, with numbers;
+    """The paper's observations ([Koziarski] section 3.2.3) against what the simulation shows, with numbers;
     ``source`` names what the points' values are. The verdicts are our reading of the text:
     'insensitive' = p < 0.3, 'slower' = p < 0.9 [R]."""
     c_over_a = points["c_over_a"].to_numpy(dtype=float)
@@ -437,7 +437,7 @@ def _campaign(name: str, reduced: pd.DataFrame, log_path: Path, out_dir: Path, t
                f"(quasi-static steady state of the simulated stand); "
                + ("dashed: the same stand at the other alpha' option (summary); " if other else "")
                + f"canonical frame (forward running); "
-               f"paper: seed 000 Fig. {name[3:]}, c/a = {PAPER_C_OVER_A[name]:g}" + (f"; {note}" if note else ""))
+               f"paper: [Koziarski] Fig. {name[3:]}, c/a = {PAPER_C_OVER_A[name]:g}" + (f"; {note}" if note else ""))
     figure = f"{name}.png"
     draw(points, curves, Path(out_dir) / figure, f"{title}\n{_conditions(points)}", caption, other)
     lines = [f"{figure}: {len(points)} points in {len(series(points))} curves; {caption}"]
@@ -471,10 +471,10 @@ def _line_check(points: pd.DataFrame, curves: dict[tuple, pd.DataFrame]) -> str:
 
 
 def fig14(reduced: pd.DataFrame, log_path: Path, out_dir: Path, title: str) -> CampaignOutcome:
-    """Seed 000 Fig. 14 (c = 0): fig14.png in out_dir and the summary lines (see the module docstring)."""
+    """[Koziarski] Fig. 14 (c = 0): fig14.png in out_dir and the summary lines (see the module docstring)."""
     return _campaign("fig14", reduced, log_path, out_dir, title)
 
 
 def fig15(reduced: pd.DataFrame, log_path: Path, out_dir: Path, title: str) -> CampaignOutcome:
-    """Seed 000 Fig. 15 (c/a = -2): fig15.png in out_dir and the summary lines (see the module docstring)."""
+    """[Koziarski] Fig. 15 (c/a = -2): fig15.png in out_dir and the summary lines (see the module docstring)."""
     return _campaign("fig15", reduced, log_path, out_dir, title)

@@ -1,20 +1,20 @@
-"""Stand A's campaigns: seed 000 Figs. 10 and 11, laid out like the paper's, with the checks they state.
+"""Stand A's campaigns: [Koziarski] Figs. 10 and 11, laid out like the paper's, with the checks they state.
 
 Fig. 10: c = 0 (Delta h = 0); Fig. 11: Delta h = 1.06 mm, c/a = 0.4 - l/(87.7 a) (the caption).
 Both: F_y [N], mu_T and mu_v [1] and T2 [N m] versus l/a for b/a = 1 and 2 (F_N = 96.2 and 385 N),
-from a sweep of the brake set-point (seed 000 3.1.2). Reduced points (eqs. 29-35, the stand's
+from a sweep of the brake set-point ([Koziarski] section 3.1.2). Reduced points (eqs. 29-35, the stand's
 reduce_log) are drawn with error bars of k = 2 expanded uncertainty, the simulation's truth as lines.
 
 Per point the campaign joins the reduced table with the log: settings (F_N, Delta h), the balance
 reading T2 [N m], and the truth (F_y, T2, mu) when the log has one. b/a comes from F_N through the
-reduction's own StandAGeometry.b_over_a (seed notes 3.1); u(F_N) is the stand's normal_force_u_N
+reduction's own StandAGeometry.b_over_a (Equations §3.1); u(F_N) is the stand's normal_force_u_N
 (read from the scene stored in the log); u(T2) is the reduced table's ``u_T2_N_m`` if it has one,
 else the reduction's reading of the balance, +-0.0196 N m as a rectangular half width (docs/stand-a.md
 section 7) - [R] our choice for the T2 error bars only (no check depends on it).
 
 Checks (summary lines, numbers in them):
 * agreement per b/a: the fraction of points with |reduced - true| <= 2u, per quantity;
-* the paper's claim, "F_y is significantly affected by ... b/a" (seed 000 3.1.2): F_y and the
+* the paper's claim, "F_y is significantly affected by ... b/a" ([Koziarski] section 3.1.2): F_y and the
   load-normalised F_y/F_N of the largest b/a against the smallest at matched l/a - the smaller
   b/a's curve is interpolated linearly (in reduced l/a) to each point of the other; u adds the
   interpolated u, the point's u and slope x u(l/a) in quadrature (correlations between the two
@@ -44,7 +44,7 @@ from rig.stands.yoke.parameters import YokeParameters, resolve
 
 K = 2.0  # coverage factor of the error bars and of the agreement test [1]
 CAPTION_C_OVER_A_AT_L0 = 0.4  # Fig. 11 caption: c/a = 0.4 - l/(87.7 a) [1]
-CAPTION_L_SCALE = 87.7  # [1] (seed notes 2: l1 - l2 = 87.7 Delta h)
+CAPTION_L_SCALE = 87.7  # [1] (Equations §2: l1 - l2 = 87.7 Delta h)
 QUANTITIES = {  # column -> label in the summary (each with u_<column>; truth as true_<column>)
     "l_over_a": "l/a", "c_over_a": "c/a", "F_y_N": "F_y", "mu_v": "mu_v", "mu_T": "mu_T", "T2_N_m": "T2",
 }
@@ -294,9 +294,9 @@ def _campaign(name: str, caption: str, reduced: pd.DataFrame, log_path, out_dir,
     log_path, out_dir = Path(log_path), Path(out_dir)
     points = campaign_points(reduced, log_path)
     figure = f"{name}.png"
-    _draw(points, out_dir / figure, f"{title}\nseed 000 {caption}", with_c_over_a)
+    _draw(points, out_dir / figure, f"{title}\n[Koziarski] {caption}", with_c_over_a)
     groups = _groups(points)
-    lines = [f"{name} (seed 000 {caption}): " + "; ".join(
+    lines = [f"{name} ([Koziarski] {caption}): " + "; ".join(
         f"b/a = {b:g} (F_N = {g['normal_force_N'].iloc[0]:g} N): {len(g)} points, l/a "
         f"{g['l_over_a'].min():.2f} .. {g['l_over_a'].max():.2f}" for b, g in groups)]
     lines += [agreement_line(b, g) for b, g in groups]

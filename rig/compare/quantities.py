@@ -23,7 +23,7 @@ class KnownQuantity:
     magnitude: bool
 
 
-# (spellings, quantity): eq. numbers are those of seed 000 (seed notes section 1.7).
+# (spellings, quantity): eq. numbers are those of [Koziarski] (Equations §1.7).
 _TABLE: tuple[tuple[tuple[str, ...], KnownQuantity], ...] = (
     (("alpha'", "alpha"), KnownQuantity("alpha", False)),  # eq. (21)
     (("nu_T", "F_x / (mu F_N)"), KnownQuantity("nu_T", False)),  # eq. (27)

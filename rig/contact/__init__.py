@@ -1,4 +1,4 @@
-"""Contact-force model of seed 000, section 2 (knows nothing of test stands).
+"""Contact-force model of [Koziarski], section 2 (knows nothing of test stands).
 
 ``solve(model, ...)`` returns a :class:`ContactResult` for the models "rigid", "linear",
 "fastsim" and "kinematic"; ``solve_creepage`` states the same problem in creepages (zero spin

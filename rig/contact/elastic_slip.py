@@ -1,4 +1,4 @@
-"""Self slip of one element, eqs. (18)-(20) of seed 000 as reconstructed in seed notes 1.6.
+"""Self slip of one element, eqs. (18)-(20) of [Koziarski] as reconstructed in Equations §1.6.
 
 A square element of side 2 dx carries a uniform shear mu p along x. The displacement of its
 centre due to that shear, per deformable body i (Cerruti, prefactor 1/(2 pi G_i)), is
@@ -12,11 +12,11 @@ and the element's own elastic slip velocity is du/dt with dt = 2 dx/v (eq. 17):
 
 ``compliance_factor`` (a number, no flag):
 * CERRUTI_FACTOR = 1 is the physically correct single-body Cerruti compliance 1/(2 pi G_i)
-  (checked in the seed notes against Mindlin's (2 - nu)/(8 G a)); the project default;
+  (checked in the Equations page against Mindlin's (2 - nu)/(8 G a)); the project default;
 * AUTHOR_FACTOR = 2 is the author's per-body 1/(pi G_i), which reproduces his three printed
   numbers (0.018476 v, 0.3222 v, 0.018593 v) to 4 digits. The printed eq. (20)
-  "4 p mu (2 - nu) v/(pi G)" contradicts those numbers (seed notes table 1.8 #12).
-v_el does not depend on dx (stated in seed 000, confirmed by the closed form).
+  "4 p mu (2 - nu) v/(pi G)" contradicts those numbers (Equations §1.8 #12).
+v_el does not depend on dx (stated in [Koziarski], confirmed by the closed form).
 Rigid bodies (Material.E = inf) contribute nothing.
 """
 
@@ -56,7 +56,7 @@ def square_shear_integral(half_side: float, nu: float) -> float:
     """Closed form of the integral of eq. (18): 4 dx (2 - nu) asinh(1) [m].
 
     int_{-dx}^{dx} int_{-dx}^{dx} [x^2 + (1 - nu) y^2]/(x^2 + y^2)^(3/2) dx dy, from
-    int int 1/R = 8 dx asinh(1) and int int x^2/R^3 = 4 dx asinh(1) (seed notes 1.6).
+    int int 1/R = 8 dx asinh(1) and int int x^2/R^3 = 4 dx asinh(1) (Equations §1.6).
     """
     dx = validate.number("half_side", half_side, 0.0, lo_open=True)
     nu = validate.number("nu", nu, -1.0, 0.5, lo_open=True)

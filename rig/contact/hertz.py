@@ -1,10 +1,10 @@
-"""Hertz normal contact: elliptical point contact and finite line contact (seed notes 1.9, 3.1, 3.2, 5.1).
+"""Hertz normal contact: elliptical point contact and finite line contact (Equations §1.9, 3.1, 3.2, 5.1).
 
-Naming as in seed 000 (seed notes 1.1): x = rolling direction, y = along the contact line;
+Naming as in [Koziarski] (Equations §1.1): x = rolling direction, y = along the contact line;
 **a = half length along y, b = half width along x** (Kalker's tables use the opposite names).
 SI units throughout: lengths [m], forces [N], pressures and moduli [Pa].
 
-Point contact (Johnson, Contact Mechanics, ch. 4, as quoted in seed notes 5.1): the gap between
+Point contact (Johnson, Contact Mechanics, ch. 4, as quoted in Equations §5.1): the gap between
 two bodies with principal radii aligned with x and y is h = x^2/(2 R_x) + y^2/(2 R_y),
 1/R_x = 1/R1x + 1/R2x, 1/R_y = 1/R1y + 1/R2y (negative radius = concave, inf = flat). With the
 semi-major axis A_M, semi-minor B_m, ratio lam = B_m/A_M, e^2 = 1 - lam^2 and complete elliptic
@@ -18,7 +18,7 @@ E - lam^2 K = (e^2 lam^2/3) R_D(0, 1, lam^2)), which makes the ellipticity root 
 conditioned from the circle to lam ~ 1e-9. K and E themselves are reported from scipy's
 ellipkm1/ellipe.
 
-Finite line contact of length 2a (seed notes 3.1/3.2): b = sqrt(4 F R_x/(pi 2a E*)),
+Finite line contact of length 2a (Equations §3.1/3.2): b = sqrt(4 F R_x/(pi 2a E*)),
 p0 = 2 F/(pi b 2a); pressure semi-elliptic across (x), uniform along (y).
 """
 
@@ -64,7 +64,7 @@ def hertz_traction_slip(x: np.ndarray, y: np.ndarray, poisson: float, direction:
     traction along x: u_x = c [4 (2 - nu) a^2 - (4 - 3 nu) x^2 - (4 - nu) y^2], u_y = c 2 nu x y.
     Returned for the pair, twice that, with G the pair's combined modulus (2/G = 1/G1 + 1/G2) and nu
     its Poisson's ratio: the relative displacement's rate along x, which is the elastic slip per unit
-    rolling speed (seed 000, eqs. 8, 10). A closed form the grid models are checked against.
+    rolling speed ([Koziarski], eqs. 8, 10). A closed form the grid models are checked against.
     """
     c = 2.0 * np.pi / 32.0
     along = -2.0 * c * ((4.0 - 3.0 * poisson) if direction == 0 else (4.0 - poisson)) * np.asarray(x, dtype=float)
@@ -218,7 +218,7 @@ def point_contact(normal_force: float, geometry: PointGeometry, e_star: float) -
     """Hertz elliptical contact for normal force [N], body radii and contact modulus E* [Pa].
 
     E* = 1/((1 - nu1^2)/E1 + (1 - nu2^2)/E2) (rig.contact.materials.contact_modulus).
-    Returns a along y and b along x (seed notes 1.1). Raises ParameterError for a force <= 0
+    Returns a along y and b along x (Equations §1.1). Raises ParameterError for a force <= 0
     (no contact: a, b, p0 -> 0) and for a non-convex or flat gap.
     """
     force = validate.number("normal_force", normal_force, 0.0, lo_open=True)

@@ -1,14 +1,14 @@
 """Love/Cerruti surface displacements of tangential traction, eq. (6), integrated exactly per cell.
 
 Relative tangential displacement u = u1 - u2 of the two surfaces under a traction q on body 1
-(and -q on body 2), Kalker's combined modulus 2/G = 1/G1 + 1/G2 (seed notes 1.4, table 1.8 #5-6):
+(and -q on body 2), Kalker's combined modulus 2/G = 1/G1 + 1/G2 (Equations §1.4, table 1.8 #5-6):
 
     u_x = 1/(pi G) int [ ((1-nu)/R + nu X^2/R^3) q_x + nu X Y/R^3 q_y ] dS'
     u_y = 1/(pi G) int [ nu X Y/R^3 q_x + ((1-nu)/R + nu Y^2/R^3) q_y ] dS'
 
 with X = x - x', Y = y - y', R = |(X, Y)|. Each source cell carries a uniform traction; the
 integral over the cell is exact (corner sums of closed-form primitives), so neighbours and the
-cell itself are treated alike and no point-force kernel appears (seed notes 1.9 step 2).
+cell itself are treated alike and no point-force kernel appears (Equations §1.9 step 2).
 Dimensionless: lengths in a, traction in mu p0, displacement in mu p0 a / G.
 """
 
@@ -39,7 +39,7 @@ def _corner_sum(prim, x1: np.ndarray, x2: np.ndarray, y1: np.ndarray, y2: np.nda
 def cell_integrals(X: np.ndarray, Y: np.ndarray, hx: float, hy: float) -> tuple[np.ndarray, ...]:
     """Integrals of 1/R, X^2/R^3, Y^2/R^3, XY/R^3 over a source cell of size hx x hy.
 
-    (X, Y) is the field point relative to the source-cell centre. Primitives (seed notes 1.9):
+    (X, Y) is the field point relative to the source-cell centre. Primitives (Equations §1.9):
     1/R: X asinh(Y/|X|) + Y asinh(X/|Y|); X^2/R^3: Y asinh(X/|Y|); Y^2/R^3: X asinh(Y/|X|); XY/R^3: -R.
     """
     x1, x2 = X - hx / 2, X + hx / 2

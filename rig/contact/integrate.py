@@ -1,4 +1,4 @@
-"""Force and moment coefficients of a traction field, eqs. (26)-(28) of seed 000.
+"""Force and moment coefficients of a traction field, eqs. (26)-(28) of [Koziarski].
 
 All models integrate their tractions with this one function, so the definitions (and the sign
 convention of rig.contact.result) live in one place.
@@ -16,7 +16,7 @@ def coefficients(x: np.ndarray, y: np.ndarray, q: np.ndarray, p: np.ndarray, cre
 
     x, y: sample points [a]; q: traction (2, N) [mu p0]; p: pressure (N,) [p0] at the same
     points (equal weights, so F_N is proportional to sum(p)). The moment about the rolling point
-    is converted from the moment about the centre, M_C = M_O - c F_y + l F_x (seed notes 1.1), and
+    is converted from the moment about the centre, M_C = M_O - c F_y + l F_x (Equations §1.1), and
     nu_0 = P_t/(mu a F_N |w0|) = -sign(w0) M_C/(mu a F_N); both are NaN for zero spin.
     """
     load = float(np.sum(p))

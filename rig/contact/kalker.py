@@ -1,4 +1,4 @@
-"""Kalker's linear-theory creepage coefficients C11, C22, C23 (and C33), eq. (4) of seed 000.
+"""Kalker's linear-theory creepage coefficients C11, C22, C23 (and C33), eq. (4) of [Koziarski].
 
 Source of C11, C22, C23 for the ellipse: Kalker (1990), Table E.3, as shipped in
 ``data/kalker_linear_coefficients.csv`` (header there). Kalker's a lies along the rolling

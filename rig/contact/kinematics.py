@@ -1,4 +1,4 @@
-"""Contact kinematics of seed 000, section 2.1: spin (eq. 1), rolling point (eqs. 2-3), rigid slip.
+"""Contact kinematics of [Koziarski], section 2.1: spin (eq. 1), rolling point (eqs. 2-3), rigid slip.
 
 Pure functions. Units: angular speeds in rad/s, lengths in m, speeds in m/s unless a docstring
 says "dimensionless". The contact problem itself is stated in *creepages* (centre slip and spin
@@ -19,7 +19,7 @@ def spin(omega_1: float, alpha_1: float, omega_2: float, alpha_2: float) -> floa
     """Spin (velocity of pivoting friction) w0 = w1 sin(alpha1) - w2 sin(alpha2), eq. (1) [rad/s].
 
     alpha_i [rad] is the half contact angle (angle between wheel axis and contact plane); the
-    printed "w1 sin a2" is a typo for w2 (seed notes table 1.8 #1). Signed speeds: for wheel axes
+    printed "w1 sin a2" is a typo for w2 (Equations §1.8 #1). Signed speeds: for wheel axes
     on opposite sides of the contact the second term enters with the opposite sign of w2.
     """
     return omega_1 * np.sin(alpha_1) - omega_2 * np.sin(alpha_2)
@@ -39,7 +39,7 @@ def lateral_slip(v_v: float, f: float, spin_rate: float, v: float, sigma: float)
     """Lateral slip velocity at the contact centre v_y = v_v + f w0 + v sin(sigma), eq. (3) [m/s].
 
     v_v: relative velocity along the contact line [m/s]; f: rolling-friction length [m] (the
-    forward shift of the normal reaction, not the dimensionless f_v of seed 001); v: rolling
+    forward shift of the normal reaction, not the dimensionless f_v of [Zhao]); v: rolling
     speed [m/s]; sigma: misalignment (twist) angle of the axes [rad].
     """
     return v_v + f * spin_rate + v * np.sin(sigma)
@@ -52,7 +52,7 @@ class Creepage:
     s_g(X, Y) = (xi - phi * Y, eta + phi * X), X = x/a, Y = y/a, in units of the elastic slip
     scale mu p0 v / G (G: Kalker's combined shear modulus 2/G = 1/G1 + 1/G2). Hence
     xi = xi_K G/(mu p0), eta = eta_K G/(mu p0) for Kalker's creepages xi_K, eta_K, and
-    phi = a G (w0/v)/(mu p0) = 1/kappa, kappa = alpha'/(20 (1 - nu)) (seed notes 1.7).
+    phi = a G (w0/v)/(mu p0) = 1/kappa, kappa = alpha'/(20 (1 - nu)) (Equations §1.7).
     """
 
     xi: float
@@ -63,7 +63,7 @@ class Creepage:
     def from_rolling_point(cls, alpha: float, c_over_a: float, l_over_a: float, poisson: float) -> Creepage:
         """Creepages of a rotation about C = (c, l) for track deformability alpha' (eq. 21).
 
-        s_g(O) = w0 (l, -c) (seed notes 1.1), so xi = phi l/a and eta = -phi c/a.
+        s_g(O) = w0 (l, -c) (Equations §1.1), so xi = phi l/a and eta = -phi c/a.
         alpha' = inf gives zero creepage (full stick, no traction); alpha' = 0 is rigid sliding
         and has no finite elastic scale: callers handle it before calling this.
         """

@@ -1,10 +1,10 @@
-"""Elastic materials and the dimensionless material groups of seed 000, eqs. (21)-(24).
+"""Elastic materials and the dimensionless material groups of [Koziarski], eqs. (21)-(24).
 
 SI units: moduli [Pa], density [kg/m^3], speeds [m/s], spin [rad/s], lengths [m].
 A rigid body is a Material with E = inf (its compliance terms vanish).
 
 Combined constants:
-* substitute modulus of eqs. (22)-(23), typos fixed (seed notes table 1.8 #15):
+* substitute modulus of eqs. (22)-(23), typos fixed (Equations §1.8 #15):
   E = 2 E1' E2'/(E1' + E2'), E_i' = E_i/(1 - nu_i^2), so E = 2 E* (E* = Hertz contact modulus);
 * Kalker's combined shear modulus 2/G = 1/G1 + 1/G2 and combined Poisson ratio
   nu/G = (nu1/G1 + nu2/G2)/2 (Kalker 1990, eq. (1.44); the same definition is coded in
@@ -59,42 +59,42 @@ STEEL = Material(
     nu=0.3,
     rho=7850.0,
     name="steel",
-    source="E, nu [T] seed 002 Table 1 (and seed 000 sec. 2.2, 2.1e5 MPa with the printed 2.1e6 fixed); rho [A]",
+    source="E, nu [T] [Oscillating] Table 1 (and [Koziarski] sec. 2.2, 2.1e5 MPa with the printed 2.1e6 fixed); rho [A]",
 )
 TEXTILE_LAMINATE = Material(
     E=4.5e9,
     nu=0.3,
     rho=1350.0,
     name="textile laminate (stand A lining)",
-    source="E [A] from the stand-A contact size, seed notes 3.1; nu, rho [A] seed notes 3.1",
+    source="E [A] from the stand-A contact size, Equations §3.1; nu, rho [A] Equations §3.1",
 )
 RUBBER_LINING = Material(
     E=16.8e6,
     nu=0.5,
     rho=1200.0,
     name="rubber lining (stand B roller)",
-    source="apparent E [C] from b/a vs load of stand B (E* = 22.4 MPa), seed notes 3.2; nu [A]; rho [A] seed notes 3.2",
+    source="apparent E [C] from b/a vs load of stand B (E* = 22.4 MPa), Equations §3.2; nu [A]; rho [A] Equations §3.2",
 )
 PMMA = Material(
     E=3.0e9,
     nu=0.37,
     rho=1190.0,
     name="PMMA (stand B disc)",
-    source="E [A] 'E ~ 3 GPa' seed notes 3.2; nu, rho [A] typical handbook values",
+    source="E [A] 'E ~ 3 GPa' Equations §3.2; nu, rho [A] typical handbook values",
 )
 TEXTOLITE = Material(
     E=8000e6,
     nu=0.3,
     rho=1350.0,
-    name="textolite (seed 000 worked example)",
-    source="E, nu [T] seed 000 sec. 2.2 (Niemann values); rho [A]",
+    name="textolite ([Koziarski] worked example)",
+    source="E, nu [T] [Koziarski] sec. 2.2 (Niemann values); rho [A]",
 )
 GUM = Material(
     E=40e6,
     nu=0.5,
     rho=1200.0,
-    name="gum (seed 000 worked example)",
-    source="E, nu [T] seed 000 sec. 2.2 (Niemann values); rho [A]",
+    name="gum ([Koziarski] worked example)",
+    source="E, nu [T] [Koziarski] sec. 2.2 (Niemann values); rho [A]",
 )
 RIGID = Material(E=math.inf, nu=0.3, rho=7850.0, name="rigid", source="idealisation: no compliance")
 
@@ -164,7 +164,7 @@ def density_index(mu: float, rho: float, v: float, G: float) -> float:
     """Density (surface-inertia) index g' = mu rho v^2/(4 pi G), eq. (24) (dimensionless).
 
     mu friction coefficient, rho [kg/m^3] density, v [m/s] rolling speed, G [Pa] shear modulus.
-    The printed "mu g 2^2/(4 pi G)" is read with g = rho and 2^2 = v^2 (seed notes 1.7).
+    The printed "mu g 2^2/(4 pi G)" is read with g = rho and 2^2 = v^2 (Equations §1.7).
     """
     mu = validate.number("mu", mu, 0.0, lo_open=True)
     rho = validate.number("rho", rho, 0.0, lo_open=True)

@@ -1,4 +1,4 @@
-"""Physical-units layer over :func:`rig.contact.solve.solve` (seed notes 1.7 and 1.9 step 9).
+"""Physical-units layer over :func:`rig.contact.solve.solve` (Equations §1.7 and 1.9 step 9).
 
     from rig.contact.hertz import PointGeometry
     from rig.contact.materials import STEEL, TEXTILE_LAMINATE
@@ -14,7 +14,7 @@ Kalker's combined Poisson ratio; the dimensionless solve; then
 F_x = mu F_N nu_T (eq. 27), F_y = mu F_N nu_v (eq. 28), moments = mu a F_N nu_M,
 P_t = mu a F_N |w0| nu_0 (eq. 26).
 
-Sign conventions (seed notes 1.1): x = rolling direction (material passes in +x, so the rolling
+Sign conventions (Equations §1.1): x = rolling direction (material passes in +x, so the rolling
 speed must be > 0; reverse rolling = mirror the x axis), y = contact line; body 1 is the driving
 element; the spin w0 [rad/s] is signed. solve() is stated for w0 > 0; a negative spin is
 solved as the mirror image y -> -y (rotation w0 about (c, l) = mirror of rotation |w0| about

@@ -4,7 +4,7 @@ Sign convention (docs/contact-model.md, "Conventions"): x = rolling direction (m
 y = along the contact line, z = common normal; body 1 is the driving element. The rigid slip of
 body 1 relative to body 2 is a rotation with spin w0 about the rolling point C = (c, l),
 s_g(x, y) = w0 * (-(y - l), x - c); the traction on body 1 opposes the slip. With w0 > 0 this gives
-nu_T <= 0 for l > 0 and nu_v >= 0 for c > 0 (seed notes section 1.1).
+nu_T <= 0 for l > 0 and nu_v >= 0 for c > 0 (Equations §1.1).
 """
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
 """Transient rolling contact: the kinematic law of friction step by step along a rolling path.
 
 The steady law (rig.contact.models.kinematic) assumes constant rolling; it does not hold when the
-rolling speed reverses (oscillating drives, start-up; seed notes hard case 7). Here the surface
+rolling speed reverses (oscillating drives, start-up; hard case 7). Here the surface
 displacement field is carried with the actual motion of the material: in a step the material
 rolls the signed distance d (units of a) through the contact, so the point now at x was at
 x - d, and the slip *displacement* of the step is
@@ -19,7 +19,7 @@ same semi-smooth Newton-Krylov solver.
 
 Effects: plastic slip (psi) and static friction (static_ratio, with the stick state carried by
 the material) as in the steady model; surface inertia needs a time scale and is not available.
-Frictional work (seed 002, eq. 16: W = mu u p) is an optional output accumulated on the material
+Frictional work ([Oscillating], eq. 16: W = mu u p) is an optional output accumulated on the material
 (``frictional_work=True``; off: not computed).
 
 Dimensionless units as the steady model: lengths in a, traction in mu p0, displacements and slip
@@ -75,7 +75,7 @@ class RollingPath:
     def oscillation(cls, creepage: Creepage, stroke: float, cycles: float, step: float) -> RollingPath:
         """Oscillation of the rolled position between -stroke/2 and +stroke/2, starting at 0.
 
-        stroke: peak-to-peak rolled distance x [a] (seed 002: e = x/2b); cycles: number of
+        stroke: peak-to-peak rolled distance x [a] ([Oscillating]: e = x/2b); cycles: number of
         periods; step: largest rolled distance of one step [a]. Coulomb friction is rate
         independent, so only the sequence of positions matters, not how fast they are passed:
         the positions are stepped uniformly (a triangle wave), whatever the drive's time law.
@@ -99,7 +99,7 @@ class WorkMap:
 
     x: material coordinate [a] of each column (material at x when the path starts), y [a];
     work: sum over steps of |q . sigma| [(mu p0)^2 a/G] (eq. 16, W = mu u p);
-    path_lengthwise, path_crosswise: sums of |sigma_x|, |sigma_y| [mu p0 a/G] (seed 002 eqs. 17-18);
+    path_lengthwise, path_crosswise: sums of |sigma_x|, |sigma_y| [mu p0 a/G] ([Oscillating] eqs. 17-18);
     path: sum of |sigma| (eq. 20).
     """
 

@@ -333,7 +333,7 @@ class StandASession(LabSession):
 
 
 DEAD_WEIGHTS_N = (9.0, 21.0, 36.0, 144.0)
-"""The loads of the text (seed 000 3.2): the lab's stand B offers these dead weights (one contact
+"""The loads of the text ([Koziarski] section 3.2): the lab's stand B offers these dead weights (one contact
 table each, built once and cached)."""
 LAB_MU_RANGE_B = (0.5, 1.0)
 """The hidden mu of a stand-B session lies here (the lab's law_mu_range: one table per load) [1]."""

@@ -103,7 +103,7 @@ class Channel:
 @dataclass(frozen=True)
 class Counter:
     """Total of one pulse counter over the gate: ``count`` >= 0 pulses from a disc with
-    ``marks_per_rev`` >= 1 marks (seed notes section 2: omega = 2 pi N / (z T))."""
+    ``marks_per_rev`` >= 1 marks (Equations §2: omega = 2 pi N / (z T))."""
 
     count: int
     marks_per_rev: int
@@ -115,7 +115,7 @@ class Counter:
 
 @dataclass(frozen=True)
 class CounterReadings:
-    """Counters read over one common gate of ``gate_time_s`` > 0 [s] (seed notes section 2)."""
+    """Counters read over one common gate of ``gate_time_s`` > 0 [s] (Equations §2)."""
 
     gate_time_s: float
     counters: Mapping[str, Counter]

@@ -1,4 +1,4 @@
-"""Reduction of the measurements, eqs. (29)-(36) of seed 000 with uncertainties (docs/reduction.md).
+"""Reduction of the measurements, eqs. (29)-(36) of [Koziarski] with uncertainties (docs/reduction.md).
 
 Modules: ``equations`` (pure functions of eqs. 21, 29-36; the kinematics come from
 rig.wheel_kinematics), ``geometry`` (stand constants with provenance), ``readings`` (measured

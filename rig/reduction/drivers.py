@@ -1,7 +1,7 @@
 """Which friction estimate drives alpha': chosen once per point, from the significance of its reading.
 
 alpha' (eq. 21) contains mu, so one of the friction estimates (stand A: mu_v, then mu_T; stand
-B: mu_v, mu_T, mu_M) feeds the mu <-> alpha' iteration (seed notes 2). An estimate whose
+B: mu_v, mu_T, mu_M) feeds the mu <-> alpha' iteration (Equations §2). An estimate whose
 reading - the force or moment in its numerator - lies within ``significance`` standard
 uncertainties of zero measures nothing but noise (hard case 8: F_V at c = 0), and would drive
 alpha' anywhere. So, at the nominal readings and before any perturbation, the candidates are

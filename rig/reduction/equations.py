@@ -1,10 +1,10 @@
-"""Pure functions of the measurement method, eqs. (21), (29)-(36) of seed 000 (seed notes 2).
+"""Pure functions of the measurement method, eqs. (21), (29)-(36) of [Koziarski] (Equations §2).
 
 The kinematic relations (eqs. 1, 29-32, 36) live in rig.wheel_kinematics and are re-exported
 here so that the reduction and the stand simulators share one implementation. Everything else
 here is an instrument or balance equation. Units: SI ([m], [rad], [rad/s], [N], [N m], [s]).
 
-Sign convention (seed notes 1.1, 2): forces/moments are those the contact exerts on wheel 1
+Sign convention (Equations §1.1, 2): forces/moments are those the contact exerts on wheel 1
 (the driving wheel), F_x along the rolling direction, F_y along the contact line, M_C about the
 rolling point C; with spin w0 > 0 the model gives M_C = -mu a F_N nu_0, and nu_T < 0 when the
 driven wheel 2 is dragged forward. The braking moment T2 is positive when it resists wheel 2.
@@ -40,7 +40,7 @@ def angular_speed_from_counts(counts: float, marks: int, gate_time: float) -> fl
 
 
 def ratio_from_counts(counts_1: float, counts_2: float, marks_1: int, marks_2: int) -> float:
-    """Kinematic ratio i_k = w2/w1 = (N2 z1)/(N1 z2) [1] over a common gate (seed notes 2).
+    """Kinematic ratio i_k = w2/w1 = (N2 z1)/(N1 z2) [1] over a common gate (Equations §2).
 
     Counts are taken as real numbers so that the uncertainty propagation can perturb them;
     counts_1 must be > 0 (a stalled wheel 1 leaves i_k undefined, hard case 2).
@@ -55,7 +55,7 @@ def alpha_prime_line_contact(mu: float, b_over_a: float, v_over_spin: float, rad
 
     mu: friction coefficient [1]; v_over_spin: rolling speed over spin v/w0 [m]; radius_x:
     effective radius in the rolling direction R_x [m]. With p0 = b E*/(2 R_x) and E = 2 E*
-    (eqs. 22-23) eq. (21) reduces to this form, independent of E (seed notes 1.7).
+    (eqs. 22-23) eq. (21) reduces to this form, independent of E (Equations §1.7).
     """
     return 10.0 * mu * b_over_a * v_over_spin / radius_x
 
@@ -80,7 +80,7 @@ def mu_v(lateral_force: float, normal_force: float, nu_v: float) -> float:
     """Eq. (33): mu_v = T_v/(F_N nu_v R_v) = F_y/(F_N nu_v) [1]; forces [N].
 
     nu_v is the model's utilisation along the contact line (printed "along the peripheral
-    force" is wrong, seed notes 2).
+    force" is wrong, Equations §2).
     """
     return lateral_force / (normal_force * nu_v)
 
@@ -91,7 +91,7 @@ def wheel_2_moment(
 ) -> float:
     """Eq. (34), forward: braking moment T2 [N m] that holds wheel 2 in steady rolling.
 
-    Signed balance of wheel 2 about its axis (seed notes 2): the moment of the contact on
+    Signed balance of wheel 2 about its axis (Equations §2): the moment of the contact on
     wheel 2 along the normal is M_2 = -M_C + (l - l2) F_x + (Delta h - c) F_y; wheel 2 turns in
     the negative normal sense, so the brake holds T2 = -M_2 with F_x = mu_T F_N nu_T and
     M_C = -mu_T a F_N nu_0 (w0 > 0). In the paper's magnitude form (l2 -> |l2|, |F_x|, T0 = |M_C|):
@@ -115,7 +115,7 @@ def mu_t(
     """Eq. (35): mu_T = [T2 + F_y (Delta h - c)] / (F_N D), D = -(l - l2) nu_T - a nu_0 [1].
 
     The inverse of :func:`wheel_2_moment` with the measured F_y (= mu_v F_N nu_v; the printed
-    numerator lacks nu_v and the printed denominator mixes units, seed notes 2). T2 [N m],
+    numerator lacks nu_v and the printed denominator mixes units, Equations §2). T2 [N m],
     forces [N], lengths [m]. The paper takes the moment coefficient equal to mu_T.
     """
     denominator = normal_force * mu_t_denominator(nu_t, nu_0, l, l2, a)
@@ -128,8 +128,8 @@ def pivoting_moment_stand_b(momentometer_torque: float, peripheral_force: float,
     T_Mo [N m]: the torque the momentometer shaft delivers to the disc; F_T [N]: the peripheral
     force from the bearing dynamometer, R_c [m]: the rolling-point radius on the disc. The disc's
     balance about its axis gives T_Mo + R_c F_T = T0 = mu a F_N nu_0 (the pivoting moment, up to
-    the disc bearing's friction); the seed notes' "T_Mo = M_C - R_c F_x" (3.2) fits no sign choice
-    of the disc as body 1 (docs/stand-b.md, "Note on the seed notes"). A small difference of large
+    the disc bearing's friction); the Equations page's "T_Mo = M_C - R_c F_x" (3.2) fits no sign choice
+    of the disc as body 1 (docs/stand-b.md, "Note on the Equations page"). A small difference of large
     numbers (hard case 6): its uncertainty is propagated by the chain.
     """
     return momentometer_torque + radius_c * peripheral_force

@@ -1,8 +1,8 @@
 """Constants of the two test stands that the reduction needs, with their provenance.
 
-The ONE place for the seed-notes defaults (seed notes 3.1 stand A, 3.2 stand B). Every field
-carries metadata: its unit, a tag ("text" = stated in seed 000, "computed" = derived in the
-seed notes' arithmetic, "assumed" = plausible, not in the text) and its source; see
+The ONE place for the Equations page's defaults (Equations §3.1 stand A, 3.2 stand B). Every field
+carries metadata: its unit, a tag ("text" = stated in [Koziarski], "computed" = derived in the
+the Equations page's arithmetic, "assumed" = plausible, not in the text) and its source; see
 :func:`provenance`. Lengths are SI [m], angles [rad]. Override a value with
 dataclasses.replace (e.g. Delta h = 0 for the second yoke setting, or a = 1.7 mm).
 """
@@ -33,7 +33,7 @@ def _const(value: float, unit: str, tag: str, source: str):
 def _b_over_a_for_load(anchors: tuple[tuple[float, float], ...], normal_force: float) -> float:
     """b/a at a load [N]: the text value at a listed load, else b ~ sqrt(F_N) from the nearest one.
 
-    b ~ sqrt(F_N) at fixed a is Hertz line contact (seed notes 1.1 item 3); the nearest listed
+    b ~ sqrt(F_N) at fixed a is Hertz line contact (Equations §1.1 item 3); the nearest listed
     load is the anchor (ratio of loads closest to 1).
     """
     f = validate.number("normal_force", normal_force, 0.0, lo_open=True)
@@ -43,25 +43,25 @@ def _b_over_a_for_load(anchors: tuple[tuple[float, float], ...], normal_force: f
 
 @dataclass(frozen=True)
 class StandAGeometry:
-    """Stand A (yoke/spring stand, seed 000 Figs. 8-9): constants of eqs. (29)-(35) and (21)."""
+    """Stand A (yoke/spring stand, [Koziarski] Figs. 8-9): constants of eqs. (29)-(35) and (21)."""
 
-    l1: float = _const(42.76e-3, "m", "computed", "seed notes 3.1 Derived: l1 = r1/sin(alpha1), r2 = 50.5 mm")
-    l2: float = _const(-50.50e-3, "m", "computed", "seed notes 3.1 Derived: l2 = -r2, mean lining radius")
-    alpha_1: float = _const(math.radians(73.4), "rad", "computed", "seed notes 3.1: sin(alpha1) = 1.77 - i_k")
-    delta_h: float = _const(1.06e-3, "m", "text", "seed 000 3.1.2: yoke shift Delta h = 0 and 1.06 mm")
-    a: float = _const(1.215e-3, "m", "computed", "seed notes 3.1: c/a = 0.4 at l = 0 (annulus: 1.7 mm)")
-    r1: float = _const(40.98e-3, "m", "computed", "seed notes 3.1: r1 = v/w1 = 1.03/25.13")
-    radius_x: float = _const(143.7e-3, "m", "computed", "seed notes 3.1: R_x = r1/cos(alpha1)")
-    dynamometer_lever: float = _const(0.102, "m", "text", "seed 000: dynamometer 10 at 102 mm from axle 4")
-    yoke_lever: float = _const(42.5e-3, "m", "text", "seed 000: R_v = 42.5 mm (printed 42.2: misprint)")
-    balance_arm: float = _const(0.400, "m", "computed", "seed notes 3.1: 0.0196 N m / 0.049 N")
-    weights_half_width: float = _const(0.098, "N", "text", "seed 000: calibration weights +-10 gf")
+    l1: float = _const(42.76e-3, "m", "computed", "Equations §3.1 Derived: l1 = r1/sin(alpha1), r2 = 50.5 mm")
+    l2: float = _const(-50.50e-3, "m", "computed", "Equations §3.1 Derived: l2 = -r2, mean lining radius")
+    alpha_1: float = _const(math.radians(73.4), "rad", "computed", "Equations §3.1: sin(alpha1) = 1.77 - i_k")
+    delta_h: float = _const(1.06e-3, "m", "text", "[Koziarski] section 3.1.2: yoke shift Delta h = 0 and 1.06 mm")
+    a: float = _const(1.215e-3, "m", "computed", "Equations §3.1: c/a = 0.4 at l = 0 (annulus: 1.7 mm)")
+    r1: float = _const(40.98e-3, "m", "computed", "Equations §3.1: r1 = v/w1 = 1.03/25.13")
+    radius_x: float = _const(143.7e-3, "m", "computed", "Equations §3.1: R_x = r1/cos(alpha1)")
+    dynamometer_lever: float = _const(0.102, "m", "text", "[Koziarski]: dynamometer 10 at 102 mm from axle 4")
+    yoke_lever: float = _const(42.5e-3, "m", "text", "[Koziarski]: R_v = 42.5 mm (printed 42.2: misprint)")
+    balance_arm: float = _const(0.400, "m", "computed", "Equations §3.1: 0.0196 N m / 0.049 N")
+    weights_half_width: float = _const(0.098, "N", "text", "[Koziarski]: calibration weights +-10 gf")
     balance_half_width: float = _const(0.049, "N", "text",
-                                       "seed 000: tangent balance accuracy 5 gf, read as a +-limit "
+                                       "[Koziarski]: tangent balance accuracy 5 gf, read as a +-limit "
                                        "(the simulated scale step is the stand parameter balance_step_N)")
     load_b_over_a: tuple[tuple[float, float], ...] = field(
         default=((96.2, 1.0), (385.0, 2.0)),
-        metadata=dict(unit="N, 1", tag="text", source="seed 000: b/a = 1, 2 at 96.2, 385 N (pairing: seed notes 3.1)"),
+        metadata=dict(unit="N, 1", tag="text", source="[Koziarski]: b/a = 1, 2 at 96.2, 385 N (pairing: Equations §3.1)"),
     )
 
     def __post_init__(self) -> None:
@@ -98,15 +98,15 @@ class StandAGeometry:
 
 @dataclass(frozen=True)
 class StandBGeometry:
-    """Stand B (disc/roller stand, seed 000 Figs. 12-13): constants of eq. (36), M_C and (21)."""
+    """Stand B (disc/roller stand, [Koziarski] Figs. 12-13): constants of eq. (36), M_C and (21)."""
 
-    radius_c: float = _const(166.3e-3, "m", "text", "seed 000: rolling-point radius on the disc R_c")
-    roller_radius: float = _const(62.5e-3, "m", "text", "seed 000: roller d = 125 mm")
-    pivot_distance: float = _const(70.2e-3, "m", "text", "seed 000 eq. (36): c = 70.2 sin(sigma) mm")
-    a: float = _const(4.0e-3, "m", "text", "seed 000: track width 2a = 8 mm")
+    radius_c: float = _const(166.3e-3, "m", "text", "[Koziarski]: rolling-point radius on the disc R_c")
+    roller_radius: float = _const(62.5e-3, "m", "text", "[Koziarski]: roller d = 125 mm")
+    pivot_distance: float = _const(70.2e-3, "m", "text", "[Koziarski] eq. (36): c = 70.2 sin(sigma) mm")
+    a: float = _const(4.0e-3, "m", "text", "[Koziarski]: track width 2a = 8 mm")
     load_b_over_a: tuple[tuple[float, float], ...] = field(
         default=((9.0, 0.5), (21.0, 0.75), (36.0, 1.0), (144.0, 2.0)),
-        metadata=dict(unit="N, 1", tag="text", source="seed 000: b/a = 0.5/0.75/1/2 at 9/21/36/144 N"),
+        metadata=dict(unit="N, 1", tag="text", source="[Koziarski]: b/a = 0.5/0.75/1/2 at 9/21/36/144 N"),
     )
 
     def __post_init__(self) -> None:
@@ -119,7 +119,7 @@ class StandBGeometry:
 
     @property
     def spin_radius(self) -> float:
-        """v/w0 [m] = R_c: the disc spins at w0 = v/R_c under the rolling point (seed notes 3.2)."""
+        """v/w0 [m] = R_c: the disc spins at w0 = v/R_c under the rolling point (Equations §3.2)."""
         return self.radius_c
 
     @property

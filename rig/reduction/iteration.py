@@ -1,4 +1,4 @@
-"""The mu <-> alpha' fixed point of the reduction (seed notes 2, hard case 8) and its settings.
+"""The mu <-> alpha' fixed point of the reduction (Equations §2, hard case 8) and its settings.
 
 alpha' (eq. 21) contains mu, and the model coefficients nu_T, nu_v, nu_0 depend on alpha', so
 the reduced mu solves mu = g(mu), g(mu) = the estimate from the readings with the coefficients

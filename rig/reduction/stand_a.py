@@ -1,6 +1,6 @@
 """Stand A chain: counts + calibrated readings -> l/a, c/a, alpha', mu_v, mu_T with uncertainties.
 
-Per operating point (seed notes 2, "Implementation of the chain"):
+Per operating point (Equations §2, "Implementation of the chain"):
     i_k = N2 z1/(N1 z2), w1 = 2 pi N1/(z1 T)                         counters over a common gate
     (c, l) from i_k, eqs. (29)-(31); l/a, c/a                          rig.wheel_kinematics
     v/w0 = r1/(sin alpha1 + i_k); alpha' = 10 mu (b/a)(v/w0)/R_x       eq. (21), line contact
@@ -43,7 +43,7 @@ OUTPUTS = (
     "i_k", "omega_1_rad_s", "spin_rad_s", "l_m", "c_m", "l_over_a", "c_over_a", "F_y_N",
     "alpha_prime", "nu_T", "nu_v", "nu_0", "D_m", "mu_v", "mu_T",
 )
-DRIVERS = ("mu_v", "mu_T")  # which estimate feeds alpha', in order of preference (seed notes 2)
+DRIVERS = ("mu_v", "mu_T")  # which estimate feeds alpha', in order of preference (Equations §2)
 DRIVEN = ("alpha_prime", "nu_T", "nu_v", "nu_0", "D_m", "mu_v", "mu_T")  # computed from the driving mu
 KINEMATIC = tuple(name for name in OUTPUTS if name != "F_y_N")  # the outputs the counts' kinematics feed
 GUARDS = (Guard("mu_v", "nu_v"), Guard("mu_T", "D_m"))
@@ -227,7 +227,7 @@ def reduce(
 
     coefficients(l/a, c/a, alpha') -> (nu_T, nu_v, nu_0) with b/a, shape and model bound by
     the caller (e.g. functools.partial over rig.contact.solve.solve); it may raise
-    rig.reduction.coefficients.OutsideModelDomain. geometry defaults to the seed-notes stand A
+    rig.reduction.coefficients.OutsideModelDomain. geometry defaults to the Equations page's stand A
     (rig.reduction.geometry); settings to ReductionSettings().
     """
     geometry = StandAGeometry() if geometry is None else geometry

@@ -1,6 +1,6 @@
 """Stand B chain: settings + calibrated readings -> l/a, c/a, alpha', mu_v, mu_T, M_C with uncertainties.
 
-Per operating point (seed notes 3.2):
+Per operating point (Equations §3.2):
     l from the roller's position on its shaft (screw 19), c = e sin(sigma)     eq. (36)
     v/w0 = R_c (the disc spins under the rolling point); alpha' = 10 mu (b/a) R_c/R_r  eq. (21)
     M_C = T_Mo + R_c F_T (momentometer 8 + dynamometer 5)                 small difference of large terms
@@ -88,7 +88,7 @@ def input_set(
 
 
 def _pivoting_moment(values: Mapping[str, float], g: StandBGeometry) -> float:
-    """M_C = T_Mo + R_c F_T [N m] (seed notes 3.2)."""
+    """M_C = T_Mo + R_c F_T [N m] (Equations §3.2)."""
     return eq.pivoting_moment_stand_b(reading_value(values, "T_Mo", "N_m"), reading_value(values, "F_T", "N"),
                                       g.radius_c)
 

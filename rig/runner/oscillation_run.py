@@ -1,4 +1,4 @@
-"""An oscillation scene: amplitude sweep of frictional work and slip paths (seed 002), no stand.
+"""An oscillation scene: amplitude sweep of frictional work and slip paths ([Oscillating]), no stand.
 
 Outputs: oscillation_sweep.csv (one row per friction coefficient and stroke ratio, units in the
 column names), oscillation_sweep.png (max W and slip path versus e and the drive amplitude, e = 1
@@ -52,7 +52,7 @@ def _summary(scene: OscillationScene, tables: list[pd.DataFrame]) -> str:
         "friction-rig run summary",
         f"scene:       {scene.name} ({scene.source})",
         f"             {scene.description}",
-        "kind:        oscillation (transient grid model, seed 002 eqs. 15-20)",
+        "kind:        oscillation (transient grid model, [Oscillating] eqs. 15-20)",
         f"grid:        n = {scene.n} cells across 2a; stroke ratios {', '.join(f'{e:g}' for e in scene.stroke_ratios)}",
     ]
     for contact, table in zip(scene.contacts, tables):

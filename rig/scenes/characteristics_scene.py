@@ -1,4 +1,4 @@
-"""A contact-characteristics scene: nu_T, nu_v, nu_0 versus alpha' (seed 000 Figs. 3-7), no stand.
+"""A contact-characteristics scene: nu_T, nu_v, nu_0 versus alpha' ([Koziarski] Figs. 3-7), no stand.
 
 Runs rig.characteristics.sweep over the listed contact models, rolling points (cases) and a
 log-spaced alpha' range. All quantities are dimensionless (alpha' of eq. 21; nu of eqs. 26-28).

@@ -1,7 +1,7 @@
 """Parse and validate a scene file (TOML, read with tomllib) into a StandScene or CharacteristicsScene.
 
 ``[scene] kind`` says which: "stand" (a test stand runs a procedure; the default),
-"contact_characteristics" (the contact model alone, no stand) or "oscillation" (seed 002:
+"contact_characteristics" (the contact model alone, no stand) or "oscillation" ([Oscillating]:
 frictional work of an oscillating contact). The file's text is kept
 verbatim in the scene (it goes into the log).
 """

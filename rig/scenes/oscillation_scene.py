@@ -1,7 +1,7 @@
-"""An oscillation scene (seed 002): frictional work and slip paths of an oscillating contact
+"""An oscillation scene ([Oscillating]): frictional work and slip paths of an oscillating contact
 versus the stroke ratio e = x/2b, with the transient grid model (rig.oscillation).
 
-``[oscillation] contact`` names the source: "ball_raceway" (seed 002's FAG 7208 bearing; keys
+``[oscillation] contact`` names the source: "ball_raceway" ([Oscillating]'s FAG 7208 bearing; keys
 ring, force_N) or "disc_roller" (stand B's roller under its swinging drive; key normal_force_N).
 """
 

@@ -1,4 +1,4 @@
-"""The two test stands of seed 000 as simulators (contract: rig.stands.base).
+"""The two test stands of [Koziarski] as simulators (contract: rig.stands.base).
 
 ``stand_class(name)`` returns the class for a scene's ``stand`` key; the stand modules are
 imported only when named.

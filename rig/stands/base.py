@@ -40,7 +40,7 @@ class ParameterSpec:
     """A stand parameter a scene may override: default, unit, valid range, provenance.
 
     source: where the default comes from, starting with [text], [computed] or [assumed]
-    (seed notes tags), e.g. "[text] seed 000 3.1: F_N = 96.2 N and 385 N".
+    (the Equations page tags), e.g. "[text] [Koziarski] section 3.1: F_N = 96.2 N and 385 N".
     """
 
     default: float

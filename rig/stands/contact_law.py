@@ -12,7 +12,7 @@ disk) or a :class:`DirectLaw` (one ``solve`` per state; derivatives by central d
 **Signed states and mirror symmetries** (derived here; tests/stands/test_contact_law.py checks
 them against the rigid model and solve_creepage). The model solves one canonical case: material
 flows through the contact in +x (v > 0) and the rigid slip is a rotation w0 > 0 about C = (c, l),
-s_g = w0 (-(y - l), x - c) (seed notes 1.1). The Hertz pressure is symmetric in x and in y.
+s_g = w0 (-(y - l), x - c) (Equations §1.1). The Hertz pressure is symmetric in x and in y.
 * Mirror y (y -> -y) maps rotation w0 about (c, l) to rotation -w0 about (c, -l); the flow
   direction is kept. So w0 < 0 with v > 0 is the canonical problem at (c, -l) with F_y and every
   moment negated (as rig.contact.physical.mirror_y).
@@ -334,7 +334,7 @@ def contact_forces(
     f = law.rolling_length * a
     fx, fy, mc = mu_f * nu_t, mu_f * nu_v, -mu_f * a * nu_0  # canonical frame, eqs. (26)-(28)
     c_can, l_can = s_v * c, s_y * l
-    mo = mc + (c_can + f) * fy - l_can * fx  # M_C = M_O - c F_y + l F_x (seed notes 1.1)
+    mo = mc + (c_can + f) * fy - l_can * fx  # M_C = M_O - c F_y + l F_x (Equations §1.1)
     flip = s_v * s_y
     matrix = None
     if jacobian:

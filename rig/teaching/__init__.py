@@ -1,8 +1,8 @@
 """Teaching: small, pure physics functions for the tutorial (docs/tutorial.md).
 
-From seed 001's basics (lecture notes "Mutual actions in machinery elements") towards the
+From [Zhao]'s basics (lecture notes "Mutual actions in machinery elements") towards the
 paper's measurement method; every function states its units and the slide or equation it
-implements (seed notes section 6).
+implements (Equations §6).
 
 | module | content |
 |---|---|

@@ -1,7 +1,7 @@
 """Coulomb's laws of dry friction: static (adhesion) and kinetic (sliding) friction.
 
-Seed 001 (lecture notes "Mutual actions in machinery elements"), section 5.2.1-5.2.3, slides
-10-17; seed notes section 6. Units: forces [N], speeds [m/s], power [W]; friction
+[Zhao] (lecture notes "Mutual actions in machinery elements"), section 5.2.1-5.2.3, slides
+10-17; Equations §6. Units: forces [N], speeds [m/s], power [W]; friction
 coefficients are dimensionless [1].
 
 * Static friction, ineq. (5.1): the contact sticks while |T| <= mu_s N, where T and N are the
@@ -19,7 +19,7 @@ from rig import validate
 from rig.errors import ParameterError
 
 STANDARD_GRAVITY = 9.80665  # standard acceleration of gravity g [m/s^2] (CGPM 1901)
-MU_RANGE = (0.0, 3.0)  # accepted friction coefficients [1]; seed 001's table spans 0.04 ... 1.05
+MU_RANGE = (0.0, 3.0)  # accepted friction coefficients [1]; [Zhao]'s table spans 0.04 ... 1.05
 
 
 def friction_coefficient(name: str, value: object) -> float:
@@ -35,7 +35,7 @@ def static_and_kinetic(mu_s: object, mu_k: object) -> tuple[float, float]:
 
 
 def static_friction_holds(tangential_force: float, normal_force: float, mu_s: float) -> bool:
-    """True when the contact sticks: |T| <= mu_s N, ineq. (5.1) of seed 001 (slide 14).
+    """True when the contact sticks: |T| <= mu_s N, ineq. (5.1) of [Zhao] (slide 14).
 
     tangential_force T [N] (from the equilibrium equations), normal_force N [N] >= 0, mu_s [1].
     """

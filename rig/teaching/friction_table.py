@@ -1,9 +1,9 @@
-"""Seed 001's friction coefficients as data, with their source and the flagged contradiction.
+"""[Zhao]'s friction coefficients as data, with their source and the flagged contradiction.
 
-Source: seed 001 (R.-y. Zhao, "Mutual actions in machinery elements", lecture notes 2014),
+Source: [Zhao] (R.-y. Zhao, "Mutual actions in machinery elements", lecture notes 2014),
 slide 19 "Approximate coefficients of friction" (static friction; columns "Dry and clean" and
 "Lubricated"; some entries marked "wet") and slide 18 (ranges of mu_s and mu_k for two pairs);
-seed notes section 6. The OCR lists the table cell by cell; our reading follows the seed notes:
+Equations §6. The OCR lists the table cell by cell; our reading follows the Equations page:
 "0.30 (wet)", printed after the last row, belongs to concrete-rubber [reconstructed].
 
 The two slides disagree on steel-PTFE: slide 18 gives mu_s = 0.3-0.6 and mu_k = 0.1-0.2, the
@@ -20,8 +20,8 @@ from enum import Enum
 from rig import validate
 from rig.errors import ParameterError, UnknownNameError
 
-SOURCE_TABLE = "seed 001 slide 19 'Approximate coefficients of friction' (static friction)"
-SOURCE_RANGES = "seed 001 slide 18 'coefficient of static friction and kinetic friction'"
+SOURCE_TABLE = "[Zhao] slide 19 'Approximate coefficients of friction' (static friction)"
+SOURCE_RANGES = "[Zhao] slide 18 'coefficient of static friction and kinetic friction'"
 
 
 class Condition(Enum):
@@ -148,7 +148,7 @@ def static_coefficient(material_1: str, material_2: str, condition: Condition = 
 
 @dataclass(frozen=True)
 class Contradiction:
-    """Two statements of seed 001 about one pair that cannot both hold."""
+    """Two statements of [Zhao] about one pair that cannot both hold."""
 
     material_1: str
     material_2: str
@@ -161,7 +161,7 @@ def contradictions() -> tuple[Contradiction, ...]:
     """Check slide 18's ranges against slide 19's table and against mu_k <= mu_s (slide 10).
 
     Flags a pair when the quoted mu_s range does not overlap the table's dry value, and when the
-    quoted mu_k lies wholly above the table's dry mu_s. Seed 001 gives one such pair: steel-PTFE.
+    quoted mu_k lies wholly above the table's dry mu_s. [Zhao] gives one such pair: steel-PTFE.
     """
     found = []
     for quoted in QUOTED_RANGES:

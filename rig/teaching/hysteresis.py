@@ -1,6 +1,6 @@
 """Hysteresis of a soft disc rolling on a rigid plane: the p-epsilon loop and the shifted resultant.
 
-Seed 001 slides 26-32 (Figs. 5.7-5.9): a point of the soft rim is compressed from P1 to P3 and
+[Zhao] slides 26-32 (Figs. 5.7-5.9): a point of the soft rim is compressed from P1 to P3 and
 released from P3 to P5; an inelastic material follows a different p-epsilon line on the way
 back, the loop's area is the energy per unit volume lost per cycle, the front of the contact
 carries more pressure than the rear, and the resultant N is shifted forward by u (the

@@ -1,7 +1,7 @@
 """A body on an inclined plane: adhesion (at rest) and sliding with friction.
 
-Seed 001 slides 15-16 (adhesion, Fig. 5.4) and 20-21 (sliding, Fig. 5.5, eqs. 5.6-5.7);
-seed notes section 6. The plane makes the angle alpha [rad] with the horizontal; the body has
+[Zhao] slides 15-16 (adhesion, Fig. 5.4) and 20-21 (sliding, Fig. 5.5, eqs. 5.6-5.7);
+Equations §6. The plane makes the angle alpha [rad] with the horizontal; the body has
 mass M [kg]; g [m/s^2] is the acceleration of gravity.
 
 Equilibrium normal and along the plane: N = M g cos(alpha), T = M g sin(alpha). With
@@ -55,7 +55,7 @@ def critical_angle(mu_s: float) -> float:
 def sliding_acceleration(alpha: float, mu_k: float, g: float = STANDARD_GRAVITY) -> float:
     """Acceleration down the plane of a body sliding down: a = g (sin(alpha) - mu_k cos(alpha)) [m/s^2].
 
-    Eqs. (5.6)-(5.7) of seed 001 (slide 20). alpha [rad] in [0, pi/2], mu_k [1], g [m/s^2] > 0.
+    Eqs. (5.6)-(5.7) of [Zhao] (slide 20). alpha [rad] in [0, pi/2], mu_k [1], g [m/s^2] > 0.
     A negative value means the sliding body decelerates (it stops and then obeys at_rest).
     """
     a = _angle(alpha)

@@ -1,6 +1,6 @@
 """Coulomb's experiment "in 5 steps": a slowly increasing force F pulls a body on a plane.
 
-Seed 001 slide 13 (Fig. 5.3) and slide 17; seed notes section 6. A body of mass M [kg] rests
+[Zhao] slide 13 (Fig. 5.3) and slide 17; Equations §6. A body of mass M [kg] rests
 on a horizontal plane (N = M g). The pull grows linearly, F(t) = k t (k [N/s] small: "slowly").
 
 1. t <= t* = mu_s N / k: the micro-welds hold, the body stays at rest and the tangential

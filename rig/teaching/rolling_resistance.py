@@ -1,6 +1,6 @@
 """Rolling resistance: the normal reaction shifted forward by u = f_v r.
 
-Seed 001 slides 25-36 (Figs. 5.9-5.10; power balance eq. 5.12); seed notes section 6. A wheel
+[Zhao] slides 25-36 (Figs. 5.9-5.10; power balance eq. 5.12); Equations §6. A wheel
 of radius r rolling without slipping at speed v = omega r carries the normal reaction N not
 under its centre but a distance u ahead, towards the leading edge of the contact (slide 32),
 so N exerts the resisting moment N u about the centre. Slide 36 takes u proportional to the
@@ -9,8 +9,8 @@ it "V mu"; OCR). The power dissipated is N u omega = f_v N v (slide 35), and a w
 at its centre keeps a constant speed under the pull F = f_v N (a = 0 in rig.teaching.
 rolling_wheel), which is how f_v is measured (slide 36: "pulling a wheel on a road").
 
-Koziarski's "coefficient of rolling friction" f in eq. (3) of seed 000 is the *length* u,
-not f_v (seed notes 1.2). Units: [m], [N], [N m], [m/s], [W].
+Koziarski's "coefficient of rolling friction" f in eq. (3) of [Koziarski] is the *length* u,
+not f_v (Equations §1.2). Units: [m], [N], [N m], [m/s], [W].
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ from dataclasses import dataclass
 from rig import validate
 from rig.teaching.rolling_wheel import F_V_RANGE
 
-SOURCE = "seed 001 slide 36 'Characteristic values of the rolling coefficient'"
+SOURCE = "[Zhao] slide 36 'Characteristic values of the rolling coefficient'"
 
 
 @dataclass(frozen=True)

@@ -1,8 +1,8 @@
 """A wheel pulled at its centre: rolling without slipping, or rolling with slipping.
 
-Seed 001 slides 22-24 (rolling contact, Fig. 5.6, ineq. 5.10) and 33-40 (Fig. 5.10, power
+[Zhao] slides 22-24 (rolling contact, Fig. 5.6, ineq. 5.10) and 33-40 (Fig. 5.10, power
 balance eq. 5.12, vertical equilibrium, "Tangent component T", "Rolling with slipping");
-seed notes section 6. Units: [kg], [kg m^2], [m], [N], [m/s^2], [rad/s^2].
+Equations §6. Units: [kg], [kg m^2], [m], [N], [m/s^2], [rad/s^2].
 
 Wheel of mass m, moment of inertia J about its centre, radius r, on a horizontal rigid plane,
 moving forward (v > 0). Forces on it: the pull F at the centre (forward), the vertical load Q
@@ -12,7 +12,7 @@ backwards). Newton and Euler about the centre:
 
     m a = F - T,        J omega' = T r - N u.
 
-Rolling without slipping (v = omega r, a = omega' r) gives (seed notes section 6)
+Rolling without slipping (v = omega r, a = omega' r) gives (Equations §6)
 
     a = (F - f_v N) / (m + J/r^2),      T = J a / r^2 + f_v N,
 
@@ -74,7 +74,7 @@ class WheelMotion:
 
 
 def pulled_wheel(wheel: Wheel, pull: float, vertical_load: float, f_v: float, mu_s: float, mu_k: float) -> WheelMotion:
-    """Motion of a forward-moving wheel pulled at its centre (seed 001 slides 33-40).
+    """Motion of a forward-moving wheel pulled at its centre ([Zhao] slides 33-40).
 
     pull F [N] (forward positive), vertical_load Q [N] > 0 (weight included; N = Q),
     f_v rolling-resistance coefficient [1] in [0, 1), mu_s >= mu_k >= 0 [1].

@@ -1,4 +1,4 @@
-"""Harris amplitudes (S1)-(S3) and the stroke ratio e = x/2b (S15) for the FAG 7208 of seed 002."""
+"""Harris amplitudes (S1)-(S3) and the stroke ratio e = x/2b (S15) for the FAG 7208 of [Oscillating]."""
 
 from __future__ import annotations
 
@@ -22,7 +22,7 @@ from rig.bearing.fag7208 import FAG_7208, TABLE_2, THETA_CRIT_PUBLISHED_DEG, rep
 from rig.errors import ParameterError
 
 K = KinematicAssumption
-# seed notes 5.1: e = 1 double amplitudes [deg] per assumption for 1.27 / 0.79 / 3.17 kN
+# Equations §5.1: e = 1 double amplitudes [deg] per assumption for 1.27 / 0.79 / 3.17 kN
 SEED_NOTES_E1 = {K.K1: (1.63, 1.39, 2.21), K.K3: (1.42, 1.21, 1.92), K.K2: (1.20, 1.03, 1.63), K.K4: (1.38, 1.18, 1.88)}
 SEED_NOTES_E15 = {K.K1: (2.45, 2.09, 3.32), K.K3: (2.12, 1.81, 2.88)}
 

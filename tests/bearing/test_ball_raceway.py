@@ -1,4 +1,4 @@
-"""Ball-raceway Hertz contacts of the FAG 7208 (seed 002 Tables 1-2, seed notes 5.1)."""
+"""Ball-raceway Hertz contacts of the FAG 7208 ([Oscillating] Tables 1-2, Equations §5.1)."""
 
 from __future__ import annotations
 
@@ -14,7 +14,7 @@ from rig.bearing.fag7208 import FAG_7208, TABLE_2, reproduce_table_2
 from rig.contact.materials import contact_modulus
 from rig.errors import ParameterError
 
-# seed notes 5.1, computed independently there: (force N, P_IR GPa, P_OR GPa, b_IR mm, a_IR mm, b_OR mm, a_OR mm)
+# Equations §5.1, computed independently there: (force N, P_IR GPa, P_OR GPa, b_IR mm, a_IR mm, b_OR mm, a_OR mm)
 SEED_NOTES = [
     (1270.0, 2.105, 2.019, 0.1811, 1.590, 0.2325, 1.292),
     (790.0, 1.797, 1.723, 0.1546, 1.357, 0.1985, 1.103),
@@ -34,7 +34,7 @@ def test_table_1_derived_quantities():
 
 
 def test_rolling_curvature_matches_harris_form():
-    """Raceway curvature in the rolling direction = (2/D_w) gamma/(1 -/+ gamma) (seed notes 5.1)."""
+    """Raceway curvature in the rolling direction = (2/D_w) gamma/(1 -/+ gamma) (Equations §5.1)."""
     g, d_w = FAG_7208.gamma, FAG_7208.ball_diameter
     inner = FAG_7208.contact_geometry(Ring.INNER)
     outer = FAG_7208.contact_geometry(Ring.OUTER)
@@ -49,7 +49,7 @@ def test_acceptance_hertz_pressures_within_3_percent_of_table_2(case):
     outer = raceway_contact(FAG_7208, Ring.OUTER, case.force_N)
     assert inner.p0 == pytest.approx(case.p_inner_Pa, rel=0.03)
     assert outer.p0 == pytest.approx(case.p_outer_Pa, rel=0.03)
-    assert inner.p0 > case.p_inner_Pa and outer.p0 > case.p_outer_Pa  # +0.7 ... +2.7 % (seed notes 5.1)
+    assert inner.p0 > case.p_inner_Pa and outer.p0 > case.p_outer_Pa  # +0.7 ... +2.7 % (Equations §5.1)
 
 
 @pytest.mark.parametrize(("force", "p_ir", "p_or", "b_ir", "a_ir", "b_or", "a_or"), SEED_NOTES)
@@ -64,7 +64,7 @@ def test_contacts_match_seed_notes_arithmetic(force, p_ir, p_or, b_ir, a_ir, b_o
 
 
 def test_fitted_osculations_reproduce_the_published_pressures():
-    """Seed notes 5.1: osculations 96.48 % / 94.05 % give the published pressures within 0.6 %."""
+    """Equations §5.1: osculations 96.48 % / 94.05 % give the published pressures within 0.6 %."""
     fitted = dataclasses.replace(FAG_7208, osculation_inner=0.9648, osculation_outer=0.9405)
     for case in TABLE_2:
         assert raceway_contact(fitted, Ring.INNER, case.force_N).p0 == pytest.approx(case.p_inner_Pa, rel=0.006)

@@ -1,4 +1,4 @@
-"""Ball kinematics (S4)-(S11) of seed 002, checked with 3-D vector algebra in the cage frame."""
+"""Ball kinematics (S4)-(S11) of [Oscillating], checked with 3-D vector algebra in the cage frame."""
 
 from __future__ import annotations
 

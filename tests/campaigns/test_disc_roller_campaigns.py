@@ -1,13 +1,12 @@
-"""Stand B's campaigns fig14 and fig15 (seed 000 Figs. 14-15): shortened copies of the built-in
+"""Stand B's campaigns fig14 and fig15 ([Koziarski] Figs. 14-15): shortened copies of the built-in
 scenes run through rig.runner, and the acceptance statements asserted on their outputs.
 
 Shortened: quasi-static drive, the rigid model (full sliding; its table is one vectorised (l, c)
 slice, l/a = 0 and 0.8 on nodes, 25 c/a nodes keep c/a = -2 within 3e-4 of the quadrature), loads
 9 and 144 N, four positions, 2 s gates; one session-scoped RIG_CACHE_DIR. Independent numbers:
-the text's geometry (R_c = 166.3 mm, e = 70.2 mm, a = 4 mm; seed 000 3.2.1 and eq. 36), the seed
-notes' b/a = 0.5 and 2 at 9 and 144 N (section 3.2), the scenes' mu = 0.8, and rigid sliding of
+the text's geometry (R_c = 166.3 mm, e = 70.2 mm, a = 4 mm; [Koziarski] section 3.2.1 and eq. 36), the Equations page's b/a = 0.5 and 2 at 9 and 144 N (section 3.2), the scenes' mu = 0.8, and rigid sliding of
 a Hertz line contact integrated here by the midpoint rule (q = -mu p s/|s|, s = w0 (-(y - l),
-x - c), seed notes 1.1).
+x - c), Equations §1.1).
 """
 
 from __future__ import annotations
@@ -30,8 +29,8 @@ from rig.runner import run_scene
 from rig.scenes import load_scene, parse_scene
 
 MU, A, R_C, E = 0.8, 4e-3, 0.1663, 0.0702  # scenes' mu [1]; text: a, R_c, e [m]
-B_OVER_A = {9.0: 0.5, 144.0: 2.0}  # seed notes 3.2 [1]
-PAPER_L_MM = (-20.0, -10.0, -3.2, 0.0, 3.2, 10.0, 20.0)  # seed 000 3.2.1
+B_OVER_A = {9.0: 0.5, 144.0: 2.0}  # Equations §3.2 [1]
+PAPER_L_MM = (-20.0, -10.0, -3.2, 0.0, 3.2, 10.0, 20.0)  # [Koziarski] section 3.2.1
 SHORT = {
     'drive = "dynamic"': 'drive = "quasi_static"',
     'model = "kinematic"': 'model = "rigid"',
@@ -102,7 +101,7 @@ def expected(normal_force: float, l_m: float, c_m: float) -> dict[str, float]:
 @pytest.mark.parametrize("name, c_mm", [("fig14", 0.0), ("fig15", -8.0)])
 def test_builtin_scenes_plan_the_papers_operating_points(name, c_mm):
     scene = load_scene(name)
-    assert scene.text.startswith(f"# Seed 000 Fig. {name[3:]}") and "Runtime" in scene.text
+    assert scene.text.startswith(f"# [Koziarski] Fig. {name[3:]}") and "Runtime" in scene.text
     assert scene.outputs.paper_figure == name and PAPER_FIGURES[name].endswith(f"disc_roller_figures:{name}")
     assert scene.stand == "disc_roller" and scene.contact.model == "kinematic" and scene.parameters["mu"] == MU
     sweep = dict(scene.procedure.sweep)
@@ -224,8 +223,8 @@ def test_a_run_without_reduced_points_draws_nothing_and_says_so(tmp_path):
 
 @pytest.mark.parametrize("name", ["fig14", "fig15"])
 def test_summary_states_what_each_alpha_option_reproduces(runs, name):
-    """Issue 15, item 3: the run's alpha' (eq. 21, Hertz: 10.6 .. 42.6 at mu = 0.8, seed notes 3.2) and the
-    paper's stated range (ca. 100 .. ca. 1500 for 9 .. 144 N, seed 000 3.2) both in the summary, each with
+    """Issue 15, item 3: the run's alpha' (eq. 21, Hertz: 10.6 .. 42.6 at mu = 0.8, Equations §3.2) and the
+    paper's stated range (ca. 100 .. ca. 1500 for 9 .. 144 N, [Koziarski] section 3.2) both in the summary, each with
     the verdicts on the paper's statements."""
     report = runs[name][0]
     summary = report.summary

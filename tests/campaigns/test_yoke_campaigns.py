@@ -1,11 +1,11 @@
-"""Stand A's campaigns fig10 and fig11 (seed 000 Figs. 10-11): shortened copies of the built-in
+"""Stand A's campaigns fig10 and fig11 ([Koziarski] Figs. 10-11): shortened copies of the built-in
 scenes run through rig.runner, and the acceptance statements asserted on their outputs.
 
 Shortened: kinematic law with n = 8 and 9 x 2 x 3 surrogate tables (one per b/a, shared by both
 scenes through a session-scoped RIG_CACHE_DIR), three set-points per load, 2 s gates. The
 reduction evaluates the same law the stand simulated, so reduced-vs-truth agreement does not
 depend on the table's coarseness. Independent numbers: the scenes' mu = 0.4; eq. (32) with the
-seed notes' geometry (section 3.1: l1 = 42.76 mm, l2 = -50.50 mm, a = 1.215 mm, Delta h = 1.06 mm)
+the Equations page's geometry (section 3.1: l1 = 42.76 mm, l2 = -50.50 mm, a = 1.215 mm, Delta h = 1.06 mm)
 gives c/a = 0.40002 - l/(87.98 a), the caption says 0.4 - l/(87.7 a); the b/a pairing 1 / 2 at
 96.2 / 385 N is the text's.
 """
@@ -32,7 +32,7 @@ SHORT = {  # the 385 N set-points put l/a inside the 96.2 N span (l/a ~ 0.63 T_s
     "gate_time_s = 20.0 ": "gate_time_s = 2.0 ",
 }
 SHORT_385 = {"fig10": "{ start = 0.3, stop = 5.2, num = 24 }", "fig11": "{ start = 0.3, stop = 5.1, num = 24 }"}
-L1, L2, A, DELTA_H = 42.76e-3, -50.50e-3, 1.215e-3, 1.06e-3  # seed notes 3.1 [m]
+L1, L2, A, DELTA_H = 42.76e-3, -50.50e-3, 1.215e-3, 1.06e-3  # Equations §3.1 [m]
 
 
 def _short(name: str):
@@ -66,7 +66,7 @@ def test_builtin_scenes_meet_the_benchmark_configuration():
         assert scene.procedure.n_points >= 40 and scene.procedure.gate_time_s >= 20.0
         assert [series.fixed["normal_force_N"] for series in scene.procedure.series] == [96.2, 385.0]
         assert scene.procedure.fixed["delta_h_m"] == (0.0 if name == "fig10" else 1.06e-3)
-        assert scene.text.startswith("# Seed 000 Fig. 1")
+        assert scene.text.startswith("# [Koziarski] Fig. 1")
 
 
 @pytest.mark.parametrize("name", ["fig10", "fig11"])
@@ -115,7 +115,7 @@ def test_fig10_and_fig11_differ_in_F_y_beyond_the_uncertainty(runs):
 def test_fig11_c_over_a_follows_the_caption(runs):
     _, reduced, points, _ = runs["fig11"]
     l = points["true_l_over_a"].to_numpy()
-    eq32 = DELTA_H * (L1 - l * A) / (A * (L1 - L2))  # seed notes 2, eq. (32)
+    eq32 = DELTA_H * (L1 - l * A) / (A * (L1 - L2))  # Equations §2, eq. (32)
     assert np.allclose(points["true_c_over_a"], eq32, atol=1e-6)
     assert np.abs(points["true_c_over_a"] - caption_line(l)).max() < 1e-4  # 87.98 vs 87.7: <= 4e-5 at |l/a| <= 1
     assert np.abs(reduced["c_over_a"] - caption_line(reduced["l_over_a"])).max() < 1e-3

@@ -1,9 +1,9 @@
 """``rig compare`` end to end: the shipped exact-theory curves against analytic limits; exit codes; outputs.
 
 Independent numbers: the rigid full-sliding limit of pure spin of a Hertz circle, nu_0 = 3 pi/16
-and nu_v = 0 (seed notes section 1.10(a)); the linear (full stick) limit nu_v alpha' ->
-30 (1 - nu) C23 sqrt(b/a) / pi (seed notes section 1.7) with Kalker's C23 for the circle
-(1.47 at nu = 0.25, 1.63 at nu = 0.5, seed notes 1.10(b)); the reference curves themselves were
+and nu_v = 0 (Equations §1.10(a)); the linear (full stick) limit nu_v alpha' ->
+30 (1 - nu) C23 sqrt(b/a) / pi (Equations §1.7) with Kalker's C23 for the circle
+(1.47 at nu = 0.25, 1.63 at nu = 0.5, Equations §1.10(b)); the reference curves themselves were
 computed with Vollebregt's CONTACT (see the sidecar).
 """
 

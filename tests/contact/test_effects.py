@@ -98,6 +98,6 @@ def test_plastic_slip_effect_converges_with_the_grid():
 
 
 def test_plastic_self_slip_rate_is_eq_20():
-    """v_el/(mu p v/G) = 2 asinh(1)(2 - nu)/pi: 0.56109 (2 - nu), seed notes 1.6."""
+    """v_el/(mu p v/G) = 2 asinh(1)(2 - nu)/pi: 0.56109 (2 - nu), Equations §1.6."""
     assert plastic_slip.elastic_self_slip_rate(0.3) == pytest.approx(0.56109 * 1.7, rel=1e-4)
     assert plastic_slip.PlasticSlip(3.0).rate(0.3) == pytest.approx(2 * 0.56109 * 1.7, rel=1e-4)

@@ -1,5 +1,5 @@
 """Self slip of one element, eqs. (18)-(20) (rig.contact.elastic_slip): the author's three worked
-numbers of seed 000 sec. 2.2 and a numerical check of the integral (18)."""
+numbers of [Koziarski] sec. 2.2 and a numerical check of the integral (18)."""
 
 from __future__ import annotations
 
@@ -22,7 +22,7 @@ from rig.errors import ParameterError
 
 TEXTOLITE = Material(E=8000e6, nu=0.3, rho=1350.0)
 GUM = Material(E=40e6, nu=0.5, rho=1200.0)
-STEEL = Material(E=2.1e5 * 1e6, nu=0.3, rho=7850.0)  # printed 2.1e6 MPa is a typo (seed notes 1.8 #13)
+STEEL = Material(E=2.1e5 * 1e6, nu=0.3, rho=7850.0)  # printed 2.1e6 MPa is a typo (Equations §1.8 #13)
 
 
 @pytest.mark.parametrize(
@@ -34,7 +34,7 @@ STEEL = Material(E=2.1e5 * 1e6, nu=0.3, rho=7850.0)  # printed 2.1e6 MPa is a ty
     ],
 )
 def test_author_factor_reproduces_the_printed_examples(mu, p0, bodies, printed):
-    """ACCEPTANCE (issue 2, item 1): the three v_el,max/v of seed 000 sec. 2.2 to 4 significant digits."""
+    """ACCEPTANCE (issue 2, item 1): the three v_el,max/v of [Koziarski] sec. 2.2 to 4 significant digits."""
     ratio = self_slip_velocity(mu, p0, 1.0, bodies, compliance_factor=AUTHOR_FACTOR)
     assert f"{ratio:.4g}" == f"{printed:.4g}"
 
@@ -44,7 +44,7 @@ def test_cerruti_factor_is_half_the_author_value():
     physical = self_slip_velocity(0.4, 149e6, 2.0, bodies, compliance_factor=CERRUTI_FACTOR)
     author = self_slip_velocity(0.4, 149e6, 2.0, bodies, compliance_factor=AUTHOR_FACTOR)
     assert author == pytest.approx(2.0 * physical, rel=1e-14)
-    assert physical / 2.0 == pytest.approx(0.00924, rel=1e-3)  # seed notes 1.6 table, last column
+    assert physical / 2.0 == pytest.approx(0.00924, rel=1e-3)  # Equations §1.6 table, last column
     assert self_slip_velocity(0.4, 149e6, 2.0, bodies) == physical  # default is the Cerruti value
 
 

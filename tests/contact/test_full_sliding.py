@@ -1,6 +1,6 @@
 """Rigid full sliding (alpha' -> 0) against independent quadrature and exact identities.
 
-Reference: seed notes table 1.10(a), computed there with a 4000 x 4000 midpoint grid (5 digits).
+Reference: Equations §1.10(a), computed there with a 4000 x 4000 midpoint grid (5 digits).
 """
 
 import numpy as np

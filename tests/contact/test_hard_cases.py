@@ -1,4 +1,4 @@
-"""Hard cases of seed notes section 7 (issue 2, acceptance 5): finite, bounded, continuous."""
+"""The hard cases (docs: Hard cases; issue 2, acceptance 5): finite, bounded, continuous."""
 
 import warnings
 

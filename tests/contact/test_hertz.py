@@ -1,5 +1,5 @@
 """Hertz point and line contact (rig.contact.hertz) against closed forms, an independent
-Boussinesq quadrature, and the stand numbers of seed notes 3.1/3.2."""
+Boussinesq quadrature, and the stand numbers of Equations §3.1/3.2."""
 
 from __future__ import annotations
 
@@ -132,7 +132,7 @@ def test_elliptic_integrals_are_scipys():
     assert c.E == pytest.approx(ellipe(m), rel=1e-12)
 
 
-# --- stand numbers (seed notes 3.1, 3.2) -------------------------------------------------------
+# --- stand numbers (Equations §3.1, 3.2) -------------------------------------------------------
 
 
 @pytest.mark.parametrize(("force", "b_mm"), [(9.0, 2.0), (21.0, 3.0), (36.0, 4.0), (144.0, 8.0)])
@@ -144,7 +144,7 @@ def test_stand_b_rubber_line_contact(force, b_mm):
 
 
 def test_stand_b_pressures():
-    """p0 = 2F/(pi b L) = 0.358, 0.716, 1.432 MPa at 9, 36, 144 N (seed notes 3.2)."""
+    """p0 = 2F/(pi b L) = 0.358, 0.716, 1.432 MPa at 9, 36, 144 N (Equations §3.2)."""
     for force, p0 in [(9.0, 0.358e6), (36.0, 0.716e6), (144.0, 1.432e6)]:
         assert line_contact(force, LineGeometry(0.008, 0.0625), 22.38e6).p0 == pytest.approx(p0, rel=2e-3)
 
@@ -160,7 +160,7 @@ def test_stand_a_line_contact_gives_b_over_a_1_and_2():
 
 def test_stand_a_point_contact_numbers():
     """Wheel 1 (R_x = 143.7, R_y = 42.5 mm) on a flat laminate E = 4.47 GPa (nu 0.3, steel rigid):
-    b/a = 2.24 at every load, a = 0.69/1.09 mm, b = 1.54/2.44 mm, p0 = 44/69 MPa (seed notes 3.1)."""
+    b/a = 2.24 at every load, a = 0.69/1.09 mm, b = 1.54/2.44 mm, p0 = 44/69 MPa (Equations §3.1)."""
     geometry = PointGeometry(0.1437, 0.0425, INF, INF)
     e_star = 4.47e9 / (1.0 - 0.3**2)
     for force, a_mm, b_mm, p0 in [(96.2, 0.69, 1.54, 44e6), (385.0, 1.09, 2.44, 69e6)]:

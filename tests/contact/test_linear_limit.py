@@ -52,7 +52,7 @@ def test_kinematic_at_large_alpha_approaches_linear_theory_with_the_same_signs(c
 
 
 def test_longitudinal_force_decays_like_the_spin_formula_of_the_seed_notes():
-    """c = l = 0: nu_v alpha' -> 30 (1 - nu) C23 sqrt(b/a)/pi (seed notes 1.7)."""
+    """c = l = 0: nu_v alpha' -> 30 (1 - nu) C23 sqrt(b/a)/pi (Equations §1.7)."""
     for b in (1.0, 2.0):
         r = solve("kinematic", shape="ellipse", b_over_a=b, alpha=1e4, c_over_a=0.0, l_over_a=0.0, poisson=0.5, n=32)
         expected = 30 * 0.5 * kalker_coefficients(b, 0.5).C23 * np.sqrt(b) / np.pi

@@ -1,8 +1,8 @@
 """The paper's element-by-element marching ("no iterative steps") diverges under grid refinement.
 
-Seed 000 (after eq. 14) advertises computing each element from the forces already known
+[Koziarski] (after eq. 14) advertises computing each element from the forces already known
 upstream. Implemented here for full stick - the simplest case, where the answer is Kalker's C11 -
-it produces mesh-dependent garbage (seed notes 1.9 step 6, hard case 5), while the coupled
+it produces mesh-dependent garbage (Equations §1.9 step 6, hard case 5), while the coupled
 solve converges to Kalker's value. This is why rig.contact offers only the coupled solver.
 """
 

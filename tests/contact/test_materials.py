@@ -1,5 +1,5 @@
 """Materials and dimensionless groups (rig.contact.materials) against the identities and stand
-numbers of seed notes 1.7, 3.1 and 3.2."""
+numbers of Equations §1.7, 3.1 and 3.2."""
 
 from __future__ import annotations
 
@@ -45,7 +45,7 @@ def test_substitute_modulus_is_twice_the_contact_modulus():
 @settings(max_examples=50, deadline=None)
 @given(e1=st.floats(1e6, 1e12), e2=st.floats(1e6, 1e12), nu=st.floats(0.0, 0.5))
 def test_equal_poisson_identity(e1, e2, nu):
-    """With equal nu and Kalker's G: E = 2G/(1 - nu) and combined nu = nu (seed notes 1.7)."""
+    """With equal nu and Kalker's G: E = 2G/(1 - nu) and combined nu = nu (Equations §1.7)."""
     m1, m2 = Material(e1, nu, 1000.0), Material(e2, nu, 1000.0)
     g = combined_shear_modulus(m1, m2)
     assert substitute_modulus(m1, m2) == pytest.approx(2.0 * g / (1.0 - nu), rel=1e-12)
@@ -65,7 +65,7 @@ def test_kalker_combined_constants():
 
 
 def test_alpha_prime_identity_with_kappa():
-    """alpha' = 20 (1 - nu) kappa, kappa = mu p0 v/(G a w0), for equal nu (seed notes 1.7)."""
+    """alpha' = 20 (1 - nu) kappa, kappa = mu p0 v/(G a w0), for equal nu (Equations §1.7)."""
     nu = 0.3
     m = Material(4.5e9, nu, 1350.0)
     mu, p0, v, a, w0 = 0.4, 40e6, 1.03, 1.2e-3, 44.5
@@ -77,7 +77,7 @@ def test_alpha_prime_identity_with_kappa():
 
 @pytest.mark.parametrize("modulus", [1e6, 3e9, 2e11])
 def test_line_contact_alpha_prime_is_independent_of_E(modulus):
-    """Hertz line contact: alpha' = 10 mu (b/a)(v/w0)/R_x, whatever E (seed notes 1.7)."""
+    """Hertz line contact: alpha' = 10 mu (b/a)(v/w0)/R_x, whatever E (Equations §1.7)."""
     mu, v, w0, force = 0.5, 0.3, 2.0, 50.0
     soft = Material(modulus, 0.4, 1000.0)
     geometry = LineGeometry(0.01, 0.05)
@@ -89,7 +89,7 @@ def test_line_contact_alpha_prime_is_independent_of_E(modulus):
 @pytest.mark.parametrize(("force", "alpha_ref"), [(96.2, 0.64), (385.0, 1.29)])
 def test_stand_a_alpha_prime(force, alpha_ref):
     """Stand A, mu = 0.4, v/w0 = 23.15 mm, R_x = 143.7 mm, a = 1.215 mm, laminate E 4.5 GPa:
-    alpha' = 0.64 (b/a = 1) and 1.29 (b/a = 2) (seed notes 3.1)."""
+    alpha' = 0.64 (b/a = 1) and 1.29 (b/a = 2) (Equations §3.1)."""
     laminate = PRESETS["textile_laminate"]
     contact = line_contact(force, LineGeometry(2.43e-3, 0.1437), contact_modulus(RIGID, laminate))
     w0 = 44.5
@@ -100,7 +100,7 @@ def test_stand_a_alpha_prime(force, alpha_ref):
 
 @pytest.mark.parametrize("force", [9.0, 21.0, 36.0, 144.0])
 def test_stand_b_alpha_prime(force):
-    """Stand B: alpha' = 10 mu (b/a) R_c/R_r = 26.6 mu (b/a) (seed notes 3.2), R_c = 166.3, R_r = 62.5 mm."""
+    """Stand B: alpha' = 10 mu (b/a) R_c/R_r = 26.6 mu (b/a) (Equations §3.2), R_c = 166.3, R_r = 62.5 mm."""
     rubber = PRESETS["rubber_lining"]
     contact = line_contact(force, LineGeometry(0.008, 0.0625), contact_modulus(RIGID, rubber))
     w0 = 1.889

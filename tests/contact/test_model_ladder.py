@@ -53,7 +53,7 @@ def test_adhesion_grows_and_pivoting_loss_falls_with_alpha():
 
 
 def test_longitudinal_force_of_pure_spin_rises_to_one_maximum_then_decays():
-    """Seed notes 1.10(c): nu_v (c = l = 0) rises from 0 to a single maximum near alpha' 3-30, then ~1/alpha'."""
+    """Equations §1.10(c): nu_v (c = l = 0) rises from 0 to a single maximum near alpha' 3-30, then ~1/alpha'."""
     alphas = np.geomspace(0.1, 1000.0, 13)
     nu_v = np.array([_solve("kinematic", "ellipse", 1.0, 0.0, 0.0, a, n=24).nu_v for a in alphas])
     peak = int(np.argmax(nu_v))

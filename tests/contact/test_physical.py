@@ -1,5 +1,5 @@
 """Physical-units layer (rig.contact.physical): consistency with solve, the rigid full-sliding
-table of seed notes 1.10(a) scaled to newtons, negative spin, errors."""
+table of Equations §1.10(a) scaled to newtons, negative spin, errors."""
 
 from __future__ import annotations
 
@@ -53,7 +53,7 @@ def test_forces_are_mu_fn_times_the_dimensionless_result():
     assert r.moment_O_N_m == pytest.approx(scale * d.nu_Mo, rel=1e-12)
     assert r.moment_C_N_m == pytest.approx(scale * d.nu_MC, rel=1e-12)
     assert r.friction_power_W == pytest.approx(scale * 44.5 * d.nu_0, rel=1e-12)
-    # M_C = M_O - c F_y + l F_x (seed notes 1.1)
+    # M_C = M_O - c F_y + l F_x (Equations §1.1)
     assert r.moment_C_N_m == pytest.approx(r.moment_O_N_m - 0.3e-3 * r.force_y_N + 0.5e-3 * r.force_x_N, rel=1e-9)
     # P_t = -w0 M_C >= 0 for the rigid-slip power
     assert r.friction_power_W == pytest.approx(-44.5 * r.moment_C_N_m, rel=1e-9)
@@ -75,11 +75,11 @@ def test_alpha_prime_uses_eq_21_with_the_substitute_modulus():
     c = r.contact
     assert r.substitute_modulus_Pa == pytest.approx(substitute_modulus(STEEL, LAMINATE))
     assert r.alpha_prime == pytest.approx(40 * 0.4 * c.p0 * 1.03 / (c.a * r.substitute_modulus_Pa * 44.5), rel=1e-12)
-    # stand A at 385 N: alpha' ~ 1.29 (seed notes 3.1; steel here slightly deformable)
+    # stand A at 385 N: alpha' ~ 1.29 (Equations §3.1; steel here slightly deformable)
     assert r.alpha_prime == pytest.approx(1.29, rel=0.02)
 
 
-# rigid full sliding, seed notes 1.10(a): (shape, b/a, c/a, l/a, nu_T, nu_v, nu_0)
+# rigid full sliding, Equations §1.10(a): (shape, b/a, c/a, l/a, nu_T, nu_v, nu_0)
 FULL_SLIDING = [
     ("ellipse", 1.0, 0.0, 0.5, -0.55223, 0.0, 0.73171),
     ("ellipse", 1.0, 0.4, 0.5, -0.52867, 0.42294, 0.81818),

@@ -2,7 +2,7 @@
 
 A Hertz-shaped tangential traction q0 sqrt(1 - r^2) on the circle has a displacement that is a
 quadratic inside the contact (rig.contact.hertz.hertz_traction_slip). Through the model's whole slip
-operator (FFT influence product, the leading edge's entry profile, the transport weights; seed 000,
+operator (FFT influence product, the leading edge's entry profile, the transport weights; [Koziarski],
 eqs. 6, 8, 10) its slip converges at order 2.5 or more in the interior, and at order ~0.5 in each row's
 first cell, where the traction grows like sqrt(x - x_L) (docs/contact-convergence.md, "Sixth study").
 """

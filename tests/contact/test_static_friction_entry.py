@@ -1,7 +1,7 @@
 """Static friction: the two conventions for material entering the contact (issue 15, item 5).
 
 static_ratio: entering material holds mu0 p (it carries no slip yet); static_ratio_after_first_stick:
-it is kinetic until it first sticks (the seed notes' memory table). Where the leading cells stick
+it is kinetic until it first sticks (the Equations page's memory table). Where the leading cells stick
 anyway (alpha' = 100 here) they agree; where the kinetic law slides from the leading edge on
 (alpha' = 1, 10 here: stick fraction 0) the second convention never reaches mu0 and stays the
 kinetic law, while the first lets entering material hold mu0 p (measured at alpha' = 10, n = 16:

@@ -79,7 +79,7 @@ def test_spline_reproduces_a_cubic_and_its_derivatives_exactly():
 
 
 def test_rigid_table_matches_the_full_sliding_reference_values(rigid_table):
-    """Seed notes 1.10(a), Hertz circle (4000^2 quadrature): at nodes and between them (l/a = 0.25)."""
+    """Equations §1.10(a), Hertz circle (4000^2 quadrature): at nodes and between them (l/a = 0.25)."""
     cases = [((0.0, 0.0), (0.0, 0.0, 3 * math.pi / 16)), ((0.0, 0.4), (0.0, 0.45239, 0.68141)),
              ((0.25, 0.0), (-0.28992, 0.0, 0.62558)), ((0.5, 0.4), (-0.52867, 0.42294, 0.81818)),
              ((1.0, 0.0), (-0.88357, 0.0, 1.10447))]

@@ -1,6 +1,6 @@
 """Sample runs for the logbook tests, and a child-process entry point for the kill tests.
 
-Numbers are stand A's of the seed notes (section 3.1): F_N = 96.2 N, Delta h = 1.06 mm,
+Numbers are stand A's of the Equations page (section 3.1): F_N = 96.2 N, Delta h = 1.06 mm,
 omega_1 = 25.13 rad/s (240 rpm), i_k = 0.8115, 60 marks per disc [A] over a 17 s gate.
 """
 
@@ -37,7 +37,7 @@ def metadata(seed: int = 7) -> RunMetadata:
 
 
 def counts(k: int) -> tuple[int, int]:
-    """Counter totals of point k: N = omega z T / (2 pi) (seed notes section 2)."""
+    """Counter totals of point k: N = omega z T / (2 pi) (Equations §2)."""
     omega_2 = OMEGA_1 * (I_K + 0.01 * k)
     return (round(OMEGA_1 * MARKS * GATE_S / (2 * math.pi)), round(omega_2 * MARKS * GATE_S / (2 * math.pi)))
 

@@ -65,7 +65,7 @@ def test_counters_table_gives_back_the_speeds(log: Path) -> None:
     assert list(table.columns) == ["N1_count", "N1_marks_per_rev", "N2_count", "N2_marks_per_rev", "gate_time_s"]
     assert table["N1_count"].dtype == np.int64
     assert table.attrs["units"]["N1_marks_per_rev"] == "1/rev"
-    # omega = 2 pi N / (z T) (seed notes section 2): 240 rpm = 25.13 rad/s to within 1 count.
+    # omega = 2 pi N / (z T) (Equations §2): 240 rpm = 25.13 rad/s to within 1 count.
     omega_1 = 2 * math.pi * table["N1_count"] / (table["N1_marks_per_rev"] * table["gate_time_s"])
     np.testing.assert_allclose(omega_1, 25.13, atol=2 * math.pi / (60 * 17.0))
     i_k = table["N2_count"] * table["N1_marks_per_rev"] / (table["N1_count"] * table["N2_marks_per_rev"])

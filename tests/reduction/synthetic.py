@@ -21,7 +21,7 @@ from rig.reduction.stand_a import StandAReadings
 from rig.reduction.stand_b import StandBReadings
 from rig.wheel_kinematics import stand_a_rolling_point
 
-OMEGA_1 = 2 * math.pi * 240 / 60  # 240 rpm of the driving wheel [rad/s] (seed notes 3.1)
+OMEGA_1 = 2 * math.pi * 240 / 60  # 240 rpm of the driving wheel [rad/s] (Equations §3.1)
 SENSITIVITY, OFFSET = 0.01, 0.002  # dynamometer calibration used in the tests [V/N], [V]
 
 
@@ -67,7 +67,7 @@ def stand_a_truth(mu, normal_force, ratio, coefficients, geometry=StandAGeometry
 def stand_a_readings(counts_1, counts_2, truth: TruthA, normal_force, *, marks=(60, 60), gate_time=20.0,
                      geometry=StandAGeometry(), b_over_a=1.0, u_force=0.5, u_signal=1e-4, u_gate=1e-4,
                      u_weights=None, u_t2=None, signal_noise=0.0, t2_noise=0.0) -> StandAReadings:
-    """Instrument readings for known truth; u_* default to the seed-notes resolutions."""
+    """Instrument readings for known truth; u_* default to the Equations page's resolutions."""
     g = geometry
     force_dyn = truth.lateral_force * g.yoke_lever / g.dynamometer_lever
     u_weights = g.weights_half_width / math.sqrt(3) if u_weights is None else u_weights

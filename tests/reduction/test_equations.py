@@ -1,4 +1,4 @@
-"""Pure functions of eqs. (21), (29)-(36) against the seed notes' hand numbers (sections 1.7, 2, 3)."""
+"""Pure functions of eqs. (21), (29)-(36) against the Equations page's hand numbers (sections 1.7, 2, 3)."""
 
 from __future__ import annotations
 
@@ -31,11 +31,11 @@ def test_acceptance_stand_a_at_l_zero():
 
 
 def test_alpha_prime_stand_a_and_b():
-    # seed notes 3.1: alpha' = 10 mu (b/a)(v/w0)/R_x = 0.64 (b/a = 1), 1.29 (b/a = 2) at mu = 0.4, v/w0 = 23.15 mm
+    # Equations §3.1: alpha' = 10 mu (b/a)(v/w0)/R_x = 0.64 (b/a = 1), 1.29 (b/a = 2) at mu = 0.4, v/w0 = 23.15 mm
     assert eq.alpha_prime_line_contact(0.4, 1.0, 23.15e-3, A.radius_x) == pytest.approx(0.644, abs=0.005)
     assert eq.alpha_prime_line_contact(0.4, 2.0, 23.15e-3, A.radius_x) == pytest.approx(1.29, abs=0.005)
     assert A.r1 / (math.sin(A.alpha_1) + 0.8115) == pytest.approx(23.15e-3, abs=0.02e-3)
-    b = StandBGeometry()  # seed notes 3.2: alpha' = 26.6 mu (b/a)
+    b = StandBGeometry()  # Equations §3.2: alpha' = 26.6 mu (b/a)
     assert eq.alpha_prime_line_contact(1.0, 1.0, b.spin_radius, b.radius_x) == pytest.approx(26.6, abs=0.05)
 
 
@@ -79,7 +79,7 @@ def test_eq_34_magnitude_form_of_the_paper():
 
 
 def test_stand_b_moment_transfer_and_mu_from_moment():
-    # M_C = T_Mo + R_c F_T: 19 N m of transfer against a 0.4 N m pivoting moment (seed notes 3.2)
+    # M_C = T_Mo + R_c F_T: 19 N m of transfer against a 0.4 N m pivoting moment (Equations §3.2)
     r_c, f_t, m_c = 166.3e-3, -0.8 * 144 * 0.8, -0.46
     t_mo = m_c - r_c * f_t
     assert eq.pivoting_moment_stand_b(t_mo, f_t, r_c) == pytest.approx(m_c, rel=1e-12)

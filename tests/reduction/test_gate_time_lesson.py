@@ -1,6 +1,6 @@
 """experiments/gate_time.py (the lesson of docs/measurement-method.md) on short gates with the rigid law.
 
-Independent numbers: the counting resolution of seed notes 2, u(l) = |dl/di_k| u(i_k) with
+Independent numbers: the counting resolution of Equations §2, u(l) = |dl/di_k| u(i_k) with
 u(i_k)/i_k = u_N sqrt(1/N1^2 + 1/N2^2), u_N = 1/sqrt(6) (counters' quantisation, docs/instruments.md),
 falls as 1/T; u(mu_T) cannot fall below the pressing force's share mu u(F_N)/F_N (eq. 35 is
 proportional to 1/F_N).

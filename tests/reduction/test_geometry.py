@@ -1,4 +1,4 @@
-"""The stand constants against the seed's own numbers (seed notes 3.1, 3.2) and their provenance."""
+"""The stand constants against [Koziarski]'s own numbers (Equations §3.1, 3.2) and their provenance."""
 
 from __future__ import annotations
 
@@ -37,5 +37,5 @@ def test_every_constant_is_tagged_with_a_source(geometry):
 
 
 def test_stand_b_constants():
-    assert B.spin_radius / B.radius_x == pytest.approx(2.661, abs=1e-3)  # R_c/R_r, seed notes 3.2
+    assert B.spin_radius / B.radius_x == pytest.approx(2.661, abs=1e-3)  # R_c/R_r, Equations §3.2
     assert B.pivot_distance * math.sin(math.radians(6.54)) == pytest.approx(8e-3, abs=5e-6)

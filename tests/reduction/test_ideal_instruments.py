@@ -88,14 +88,14 @@ def test_ideal_instruments_reproduce_the_truth_to_the_resolution(ideal, name):
 
 
 def test_l_is_within_the_counting_resolution_of_seed_notes_2(ideal):
-    # seed notes 2: delta l = |dl/di_k| delta i_k with delta i_k = i_k (1/N1 + 1/N2) for +-1 count
+    # Equations §2: delta l = |dl/di_k| delta i_k with delta i_k = i_k (1/N1 + 1/N2) for +-1 count
     stand, outcome, _, reduced = ideal
     g = stand.params.geometry
     n1, n2 = (outcome.record.counters.counters[k].count for k in ("wheel_1", "wheel_2"))
     i_k = reduced.values["i_k"]
     bound = abs(dl_dratio(i_k, g.alpha_1, g.l1, g.l2)) * i_k * (1 / n1 + 1 / n2)
     assert abs(reduced.values["l_m"] - outcome.truth["l"].value) <= bound
-    assert 1e-6 < bound < 2e-5  # ~4800 counts: ~1 % of a (seed notes 2: N >~ 4000 for delta(l/a) = 0.01)
+    assert 1e-6 < bound < 2e-5  # ~4800 counts: ~1 % of a (Equations §2: N >~ 4000 for delta(l/a) = 0.01)
 
 
 def test_the_stated_uncertainty_is_the_resolution_alone(ideal):

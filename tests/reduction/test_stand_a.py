@@ -1,4 +1,4 @@
-"""Stand A chain: forward simulation -> readings -> reduction returns the truth (seed notes 2, 3.1)."""
+"""Stand A chain: forward simulation -> readings -> reduction returns the truth (Equations §2, 3.1)."""
 
 from __future__ import annotations
 
@@ -109,7 +109,7 @@ def test_round_trip_counts_return_l_within_the_counting_resolution(l_over_a, gat
     l_lo = stand_a_rolling_point(ratio_hi, G.alpha_1, G.l1, G.l2, G.delta_h)[1]
     l_hi = stand_a_rolling_point(ratio_lo, G.alpha_1, G.l1, G.l2, G.delta_h)[1]
     assert l_lo <= out.values["l_m"] <= l_hi
-    first_order = abs(dl_dratio(ratio, G.alpha_1, G.l1, G.l2)) * ratio * (1 / n1 + 1 / n2)  # seed notes 2
+    first_order = abs(dl_dratio(ratio, G.alpha_1, G.l1, G.l2)) * ratio * (1 / n1 + 1 / n2)  # Equations §2
     assert abs(out.values["l_m"] - l_true) <= 1.1 * first_order + 1e-12
 
 

@@ -28,7 +28,7 @@ def test_rigid_forward_simulation_returns_mu(load, l_mm, sigma):
     v = point.values
     assert v["c_over_a"] == pytest.approx(math.sin(sigma) * 70.2 / 4.0, rel=1e-12)
     assert v["l_over_a"] == pytest.approx(l_mm / 4.0)
-    assert v["alpha_prime"] == pytest.approx(26.6 * MU * b_over_a, rel=2e-3)  # seed notes 3.2
+    assert v["alpha_prime"] == pytest.approx(26.6 * MU * b_over_a, rel=2e-3)  # Equations §3.2
     assert v["M_C_N_m"] == pytest.approx(truth["moment_c"], rel=1e-9)
     for name in ("mu_T", "mu_M") + (("mu_v",) if sigma != 0.0 else ()):
         assert v[name] == pytest.approx(MU, rel=1e-9), name

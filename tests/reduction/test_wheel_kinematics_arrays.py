@@ -66,7 +66,7 @@ def test_array_range_errors_name_the_first_bad_value():
     with pytest.raises(ParameterError, match="c = 0.08"):
         stand_b_twist(0.0702, np.array([0.0, 0.08]))
     sigma = np.array([0.0, math.radians(6.54)])
-    assert stand_b_offset(0.0702, sigma)[1] == pytest.approx(8.0e-3, abs=5e-6)  # seed notes 3.2
+    assert stand_b_offset(0.0702, sigma)[1] == pytest.approx(8.0e-3, abs=5e-6)  # Equations §3.2
 
 
 def test_the_stand_simulator_has_no_copy_of_the_formula():

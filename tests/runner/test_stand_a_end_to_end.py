@@ -3,7 +3,7 @@
 The built-in ``default`` scene with a cheaper contact (fastsim, n = 8, direct calls instead of a
 surrogate table) and three brake set-points. Independent facts: the truth is the scene's mu =
 0.4; a brake moment of one sign or the other moves the rolling point to either side of the
-contact centre (seed notes 2, eq. 34: T2 grows with l); the reduced mu must agree with the truth
+contact centre (Equations §2, eq. 34: T2 grows with l); the reduced mu must agree with the truth
 within its own stated uncertainty.
 """
 

@@ -1,4 +1,4 @@
-"""Oscillation scenes (seed 002): validation and a tiny run through rig.runner."""
+"""Oscillation scenes ([Oscillating]): validation and a tiny run through rig.runner."""
 
 import pandas as pd
 import pytest

@@ -16,7 +16,7 @@ from sensors.streams import effect_rng
 
 
 def test_balance_arm_and_resolution_from_paper():
-    # seed 000 3.1.1: 0.049 N at the arm <-> 0.0196 N m  =>  arm 0.400 m
+    # [Koziarski] section 3.1.1: 0.049 N at the arm <-> 0.0196 N m  =>  arm 0.400 m
     assert STAND_A_ARM_M == pytest.approx(0.400)
     b = stand_a_balance()
     # default: "accuracy 0.049 N" read as a +-limit -> step 0.098 N, u(T2) = 0.0196/sqrt(3) = 0.0113 N m
@@ -62,7 +62,7 @@ def test_momentometer_strain_and_stiffness():
     # tau = 16 T/(pi d^3), eps45 = tau/(2G): 10 N m on d = 12 mm, G = 80 GPa -> 1.8420e-4
     assert m.strain(np.array([10.0]))[0] == pytest.approx(80.0 / (np.pi * 0.012**3 * 80e9), rel=1e-12)
     assert m.strain(np.array([10.0]))[0] == pytest.approx(1.8420e-4, rel=1e-4)
-    # k_m = G pi d^4/(32 L) = 3257 N m/rad, inside seed notes 4.2's 2e3...1e4 N m/rad
+    # k_m = G pi d^4/(32 L) = 3257 N m/rad, inside Equations §4.2's 2e3...1e4 N m/rad
     assert m.torsional_stiffness_N_m_per_rad == pytest.approx(3257.2, rel=1e-4)
     assert 2e3 <= m.torsional_stiffness_N_m_per_rad <= 1e4
     assert m.nominal_sensitivity_V_per_N_m == pytest.approx(1.8420e-5 * 10 * 2000, rel=1e-4)

@@ -77,7 +77,7 @@ def test_gate_is_half_open():
 
 def test_common_gate_and_angular_speed():
     counters = stand_a_counters()
-    omega1, i_k = 2 * np.pi * 4.0, 0.8115  # 240 rpm on wheel 1 (seed notes 3.1)
+    omega1, i_k = 2 * np.pi * 4.0, 0.8115  # 240 rpm on wheel 1 (Equations §3.1)
     traj = {"wheel_1": _ramp(omega1, 25.0), "wheel_2": _ramp(i_k * omega1, 25.0)}
     r = counters.measure(traj, 1.0, 20.0)
     assert r.gate_time_s == 20.0 and dict(r.marks) == {"wheel_1": 60, "wheel_2": 60}

@@ -21,11 +21,11 @@ from sensors.errors import InstrumentParameterError
 from sensors.noise import RandomWalkDrift, WhiteNoise
 from sensors.streams import effect_rng
 
-F_Y_PER_F_DYN = 0.102 / 0.0425  # yoke lever of stand A, seed notes 3.1
+F_Y_PER_F_DYN = 0.102 / 0.0425  # yoke lever of stand A, Equations §3.1
 
 
 def test_paper_lever_number():
-    # seed 000 3.1.1: weights to 0.098 N -> (102/42.5) x 0.098 = 0.235 N on F_y
+    # [Koziarski] section 3.1.1: weights to 0.098 N -> (102/42.5) x 0.098 = 0.235 N on F_y
     assert STAND_A_LEVER.quantity(0.098) == pytest.approx(0.2352, abs=5e-5)
     assert STAND_A_LEVER.sensor_input(1.0) == 1.0
     assert STAND_A_WEIGHTS.standard_uncertainty_N == pytest.approx(0.098 / np.sqrt(3))

@@ -21,7 +21,7 @@ from rig.errors import ParameterError
 from rig.stands.base import ContactSpec
 from rig.stands.contact_law import ContactPatch, DirectLaw, TableLaw, contact_forces, make_contact_law
 
-# Stand A at 96.2 N (seed notes 3.1): line contact a = 1.215 mm, E* = 4906 MPa, p0 = 20.7 MPa, mu = 0.4
+# Stand A at 96.2 N (Equations §3.1): line contact a = 1.215 mm, E* = 4906 MPa, p0 = 20.7 MPa, mu = 0.4
 A = 1.215e-3
 PATCH = ContactPatch(mu=0.4, normal_force_N=96.2, a_m=A, p0_Pa=20.7e6, modulus_Pa=2 * 4906e6)
 MU_F = 0.4 * 96.2
@@ -58,11 +58,11 @@ def _forces(f):
 
 
 def test_alpha_prime_is_eq_21_and_gives_stand_a_value(rigid_direct):
-    """v = 1.03 m/s, w0 = 44.5 rad/s: alpha' = 0.64 for b/a = 1, mu = 0.4 (seed notes 3.1)."""
+    """v = 1.03 m/s, w0 = 44.5 rad/s: alpha' = 0.64 for b/a = 1, mu = 0.4 (Equations §3.1)."""
     f = contact_forces(rigid_direct, PATCH, speed=1.03, spin=44.5, c=0.0, l=0.0)
     assert f.alpha_prime == pytest.approx(track_deformability(0.4, 20.7e6, 1.03, A, 2 * 4906e6, 44.5), rel=1e-14)
     assert f.alpha_prime == pytest.approx(0.64, abs=0.01)
-    # pure spin about the centre, full sliding: nu_0 of the line contact b/a = 1 is 0.71139 (seed notes 1.10 a)
+    # pure spin about the centre, full sliding: nu_0 of the line contact b/a = 1 is 0.71139 (Equations §1.10 a)
     assert f.nu_0 == pytest.approx(0.71139, abs=4e-3) and f.force_x_N == pytest.approx(0.0, abs=1e-12)
 
 

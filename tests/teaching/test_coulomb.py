@@ -1,4 +1,4 @@
-"""Coulomb's laws (seed 001 slides 14-17, 21): the stick inequality, the kinetic force, the power."""
+"""Coulomb's laws ([Zhao] slides 14-17, 21): the stick inequality, the kinetic force, the power."""
 
 from __future__ import annotations
 

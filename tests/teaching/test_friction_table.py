@@ -1,4 +1,4 @@
-"""Seed 001's friction table as data (slides 18-19, seed notes 6) and the flagged steel-PTFE contradiction."""
+"""[Zhao]'s friction table as data (slides 18-19, Equations §6) and the flagged steel-PTFE contradiction."""
 
 from __future__ import annotations
 
@@ -14,7 +14,7 @@ from rig.teaching.friction_table import (
     table_row,
 )
 
-# Seed notes section 6, "Values to preload (dry / lubricated, static)", transcribed independently.
+# Equations §6, "Values to preload (dry / lubricated, static)", transcribed independently.
 SEED_NOTES = {
     ("aluminium", "steel"): ((0.61, 0.61), None, None),
     ("copper", "steel"): ((0.53, 0.53), None, None),

@@ -1,4 +1,4 @@
-"""Hysteresis of a Kelvin-Voigt rim on a rigid plane (seed 001 slides 26-32; model: rig.teaching.hysteresis).
+"""Hysteresis of a Kelvin-Voigt rim on a rigid plane ([Zhao] slides 26-32; model: rig.teaching.hysteresis).
 
 Independent checks: the Winkler closed form of the elastic case, the small-speed limit u -> v eta/E,
 and three routes to the energy lost per pass (loop area by path integration, dashpot dissipation,

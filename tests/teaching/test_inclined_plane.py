@@ -1,4 +1,4 @@
-"""The inclined plane (seed 001 slides 15-16, 20-21): rest iff tan(alpha) <= mu_s; a = g (sin - mu_k cos)."""
+"""The inclined plane ([Zhao] slides 15-16, 20-21): rest iff tan(alpha) <= mu_s; a = g (sin - mu_k cos)."""
 
 from __future__ import annotations
 

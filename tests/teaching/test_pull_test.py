@@ -1,4 +1,4 @@
-"""The slowly increasing force (seed 001 slides 13, 17): stick until mu_s N, drop to mu_k N, then slide."""
+"""The slowly increasing force ([Zhao] slides 13, 17): stick until mu_s N, drop to mu_k N, then slide."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Rolling resistance (seed 001 slides 32-36): u = f_v r, moment N u, power f_v N v, f_v = F/N."""
+"""Rolling resistance ([Zhao] slides 32-36): u = f_v r, moment N u, power f_v N v, f_v = F/N."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""A wheel pulled at its centre (seed 001 slides 22-24, 33-40; seed notes 6)."""
+"""A wheel pulled at its centre ([Zhao] slides 22-24, 33-40; Equations §6)."""
 
 from __future__ import annotations
 

@@ -82,10 +82,10 @@ def test_step06_hysteresis(tmp_path):
 def test_step07_spin(tmp_path):
     _, table = run_step("step07_spin", tmp_path, "--n", "8")
     rigid = table[table.alpha_prime == 0.0].iloc[0]
-    assert rigid.nu_0 == pytest.approx(3 * math.pi / 16, abs=2e-3)  # seed notes 1.10(a), Hertz circle
+    assert rigid.nu_0 == pytest.approx(3 * math.pi / 16, abs=2e-3)  # Equations §1.10(a), Hertz circle
     kinematic = table[table.alpha_prime > 0.0]
     assert kinematic.nu_0.iloc[0] == pytest.approx(3 * math.pi / 16, abs=0.02)  # alpha' = 0.1: nearly sliding
-    assert np.all(np.diff(kinematic.nu_0) < 1e-3)  # nu_0 falls with alpha' (seed notes 1.10(c))
+    assert np.all(np.diff(kinematic.nu_0) < 1e-3)  # nu_0 falls with alpha' (Equations §1.10(c))
     assert np.abs(kinematic.nu_T).max() < 1e-6  # pure spin: no peripheral force
 
 
@@ -97,19 +97,19 @@ def test_step08_rolling_point(tmp_path):
         row = rigid[np.isclose(rigid.c_over_a, c) & np.isclose(rigid.l_over_a, l)].iloc[0]
         return row.nu_T, row.nu_v, row.nu_0
 
-    # seed notes 1.10(a), line contact b/a = 1, full sliding
+    # Equations §1.10(a), line contact b/a = 1, full sliding
     np.testing.assert_allclose(at(0.0, 0.5), (-0.44604, 0.0, 0.82383), atol=2e-3)
     np.testing.assert_allclose(at(0.0, 1.0), (-0.81814, 0.0, 1.14653), atol=2e-3)
     np.testing.assert_allclose(at(0.4, 0.0), (0.0, 0.40027, 0.79276), atol=2e-3)
     np.testing.assert_allclose(at(1.0, 0.0), (0.0, 0.81847, 1.17536), atol=2e-3)
     stand_a = table[(table.alpha_prime > 0.0) & (table.alpha_prime < 1.0)]
-    assert stand_a.alpha_prime.iloc[0] == pytest.approx(0.64, abs=0.01)  # seed notes 3.1
+    assert stand_a.alpha_prime.iloc[0] == pytest.approx(0.64, abs=0.01)  # Equations §3.1
 
 
 def test_step09_stand_a_kinematics(tmp_path):
     _, table = run_step("step09_stand_a_kinematics", tmp_path)
     centre = table.iloc[(table.l_over_a.abs()).argmin()]
-    assert centre.i_k == pytest.approx(0.8115, abs=2e-4)  # seed notes 3.1: i_k = r1/r2 at l = 0
+    assert centre.i_k == pytest.approx(0.8115, abs=2e-4)  # Equations §3.1: i_k = r1/r2 at l = 0
     assert centre.c_over_a_delta_h_1_06mm == pytest.approx(0.40, abs=0.005)  # c/a = 0.4 at l = 0 (a = 1.215 mm)
     assert centre.spin_rad_s == pytest.approx(44.5, abs=0.1) and centre.alpha_prime == pytest.approx(0.64, abs=0.01)
 

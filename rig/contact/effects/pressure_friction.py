@@ -1,6 +1,6 @@
 """Pressure-dependent friction coefficient mu(p) = mu_ref (p/p_ref)^(-k) (model choice, issue 10).
 
-Seed 000 has one mu for the whole contact. For a rubber lining on PMMA a tribologist expects the
+[Koziarski] has one mu for the whole contact. For a rubber lining on PMMA a tribologist expects the
 coefficient to fall with the local contact pressure (adhesion friction of elastomers: the real
 contact area grows more slowly than the load, k ~ 1/3 for a Hertzian asperity model); the paper's
 Figs. 14-15 (forces growing "much more slowly" with F_N) could come from that instead of Psi > 1

@@ -2,7 +2,7 @@
 
 The forward shift f of the normal reaction adds f w0 to the lateral slip at the contact
 centre, i.e. it moves the rolling point by f across the contact line: c -> c + f (eq. 2).
-The rolling-resistance moment F_N f about the contact line (seed 001) is a normal-force effect;
+The rolling-resistance moment F_N f about the contact line ([Zhao]) is a normal-force effect;
 the physical-units layer reports it (rig.contact.physical).
 """
 

@@ -1,5 +1,5 @@
-"""Static friction mu0 > mu with stick/slip memory (seed 000 symbol list: mu0 "coefficient of
-friction during close-to-zero slip"; seed notes 1.9 step 5, hard case 9).
+"""Static friction mu0 > mu with stick/slip memory ([Koziarski] symbol list: mu0 "coefficient of
+friction during close-to-zero slip"; Equations §1.9 step 5, hard case 9).
 
 A material point that arrives at a cell sticking may hold up to mu0 p; once it slips it holds
 mu p until it sticks again. Two conventions for the material that *enters* the contact:
@@ -8,7 +8,7 @@ mu p until it sticks again. Two conventions for the material that *enters* the c
   slip yet - so it may hold mu0 p in its first cell;
 * ``StaticFrictionAfterFirstStick`` (keyword ``static_ratio_after_first_stick``): it is kinetic
   until it first sticks (holds mu p in its first cell, mu0 p from the cell after one where it
-  stuck) - the reading of the seed notes' memory table.
+  stuck) - the reading of the Equations page's memory table.
 They differ only in the first cell of each row (tests/contact/test_static_friction_entry.py).
 """
 

@@ -1,6 +1,6 @@
-"""Koziarski's kinematic law of friction (seed 000, eqs. 7-20) on a grid, solved as one coupled system.
+"""Koziarski's kinematic law of friction ([Koziarski], eqs. 7-20) on a grid, solved as one coupled system.
 
-Discrete steady rolling (seed notes 1.5, 1.9), dimensionless (lengths in a, traction in mu p0,
+Discrete steady rolling (Equations §1.5, 1.9), dimensionless (lengths in a, traction in mu p0,
 displacement in mu p0 a/G, slip in mu p0 v/G, G = Kalker's combined shear modulus):
 
     s_c = s_g,c + (U_c - U_up(c)) / hx + s_pl,c                 eqs. (8), (10), (13)
@@ -13,7 +13,7 @@ q = -mu p w/max(|w|, v0), is exactly this Coulomb condition once the element's o
 v0 = Psi v_el (eqs. 20, 25) is split off the total slip (the plastic part (Psi - 1) v_el is a
 slip velocity with no grid length in it, rig.contact.effects.plastic_slip); solving the coupled
 problem for every element at once *is* the kinematic law. The element-by-element marching that
-the paper advertises ("no iterative steps") diverges under grid refinement (seed notes 1.9 step 6;
+the paper advertises ("no iterative steps") diverges under grid refinement (Equations §1.9 step 6;
 tests/contact/test_marching_diverges.py shows it), so it is not offered.
 
 Solver: semi-smooth Newton on F(t) = q - P_r(q - rho s) (P_r: projection on the disc of radius

@@ -1,4 +1,4 @@
-"""Kalker's linear theory, eq. (4) of seed 000 (small creepage, full adhesion).
+"""Kalker's linear theory, eq. (4) of [Koziarski] (small creepage, full adhesion).
 
 In this package's frame (material flows in +x, the opposite of Kalker's) and the elastic units of
 rig.contact.kinematics.Creepage (creepages times G/(mu p0), lengths in a), with
@@ -8,7 +8,7 @@ F_N = A_F a b p0 (A_F = 2 pi/3 ellipse, pi line) and beta = b/a:
     nu_v  = -(C22 eta - sqrt(beta) C23 phi) / A_F
     nu_Mo = -(sqrt(beta) C23 eta + beta C33 phi) / A_F
 
-(eq. 4 with creepages and Kalker's combined G, seed notes 1.3; the spin terms change sign with
+(eq. 4 with creepages and Kalker's combined G, Equations §1.3; the spin terms change sign with
 the flow direction - tests/contact/test_linear_limit.py checks them against the grid model).
 Linear theory is unbounded: it is valid only while the tractions stay well below mu p.
 """

@@ -2,7 +2,7 @@
 
 The result is an integral of the pressure times the slip direction over the contact; it is
 evaluated by the midpoint rule on a grid ``SUBSAMPLES`` times finer than the model grid, so
-it is exact to that quadrature (seed notes 1.10(a) gives reference values). The point C itself
+it is exact to that quadrature (Equations §1.10(a) gives reference values). The point C itself
 (direction undefined, hard case 3) has measure zero and contributes nothing.
 """
 

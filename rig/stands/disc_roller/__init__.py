@@ -1,4 +1,4 @@
-"""Stand B of seed 000 (Figs. 12-13, section 3.2): the disc-roller stand as a digital twin.
+"""Stand B of [Koziarski] (Figs. 12-13, section 3.2): the disc-roller stand as a digital twin.
 
 A PMMA disc 1 on the vertical shaft 3 is rolled on by the rubber-lined roller 2 (d = 125 mm,
 2a = 8 mm) at the rolling-point radius R_c = 166.3 mm. The roller shaft 16 is driven by the

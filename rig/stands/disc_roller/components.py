@@ -1,4 +1,4 @@
-"""Lumped components of stand B's drive train (seed notes 4.2): motor + worm, loop, bearings, lag.
+"""Lumped components of stand B's drive train (Equations §4.2): motor + worm, loop, bearings, lag.
 
 Each is a frozen dataclass with vectorised methods (numpy arrays of states in, arrays out).
 Optional effects are built only when a scene names them; the drive train holds None otherwise.
@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-SYNCHRONOUS_SPEED = 2.0 * math.pi * 1500.0 / 60.0  # 4-pole motor at 50 Hz [rad/s] ([assumed], seed notes 4.2)
+SYNCHRONOUS_SPEED = 2.0 * math.pi * 1500.0 / 60.0  # 4-pole motor at 50 Hz [rad/s] ([assumed], Equations §4.2)
 PULL_OUT_RATIO = 2.5  # pull-out over rated torque of an induction motor [1] ([assumed] typical)
 
 
@@ -57,7 +57,7 @@ class WormDrive:
 
 @dataclass(frozen=True)
 class LoopCompliance:
-    """Torsion of momentometer 8 closing the gear loop (seed notes 4.2): T_Mo = k dz(phi) + d dz'(phi) phi'.
+    """Torsion of momentometer 8 closing the gear loop (Equations §4.2): T_Mo = k dz(phi) + d dz'(phi) phi'.
 
     phi = theta_r/i_g - theta_d: twist at the disc shaft [rad]; stiffness k [N m/rad], damping d
     [N m s/rad]. With backlash 2 delta [rad] the spring acts through the smoothed dead zone
@@ -98,7 +98,7 @@ class BearingFriction:
     """Regularised Coulomb friction T = T_c tanh(w/w_s) in the disc and roller bearings.
 
     disc_torque, roller_torque: T_c [N m]; speed_scale: w_s [rad/s] (hard case 7: no
-    discontinuity at zero speed). Seed notes 4.1: 0.01-0.05 N m [assumed].
+    discontinuity at zero speed). Equations §4.1: 0.01-0.05 N m [assumed].
     """
 
     disc_torque: float
@@ -118,7 +118,7 @@ class BearingFriction:
 class ContactRelaxation:
     """Transient contact: dF/dt = (max(|v|, v_floor)/L_r)(F_ss - F) for F = (F_x, F_y, M_O).
 
-    L_r = length_over_b * b [m] (seed notes 4.2: L_r ~ b...2b), v the rolling speed [m/s],
+    L_r = length_over_b * b [m] (Equations §4.2: L_r ~ b...2b), v the rolling speed [m/s],
     v_floor [m/s] keeps the lag finite at reversals (hard case 7). A surrogate of the full
     transient grid model (a separate issue): the loads follow the steady law with the delay of
     the material's travel over about one contact half width.

@@ -1,6 +1,6 @@
 """Contact loads on the disc from the drive-train state of stand B: signed, regularised, vectorised.
 
-Frame (docs/stand-b.md, seed notes 1.1 and 3.2): x = the direction in which the disc surface
+Frame (docs/stand-b.md, Equations §1.1 and 3.2): x = the direction in which the disc surface
 moves through the contact in FORWARD running, y = along the roller axis pointing towards the
 disc axis, z = x cross y = the disc's forward spin axis. Body 1 is the disc. The disc axis
 pierces the contact plane at D = (c, l_set + R_c) (O = contact centre): with the roller surface
@@ -10,7 +10,7 @@ roller is a rotation w_d about the rolling point C = (c, l) with
     l = l_set + R_c - v/w_d        (steady: w_r = i_g w_d, v/w_d = R_c, l = l_set),
 
 so in forward running (v > 0, w0 = w_d > 0) the contact model's canonical case applies directly.
-Reverse running (v < 0, w_d < 0) is the mirror x -> -x of it (seed notes 1.1: material flows
+Reverse running (v < 0, w_d < 0) is the mirror x -> -x of it (Equations §1.1: material flows
 in -x, the spin changes sense): the canonical problem at (-c, l), with F_x and the moments
 negated and F_y kept. [R] derived here: under x -> -x the rigid slip w0(-(y - l), x - c) with
 (v, w0) -> (-v, -w0) maps onto the canonical one at c -> -c.
@@ -20,14 +20,13 @@ M_C = -mu a F_N nu_0 (w0 > 0, eq. 26), about O: M_O = M_C + c F_y - l F_x. The d
 M_O: the moment about the disc axis is M_D = M_O - c F_y + (l_set + R_c) F_x, which stays exact
 when a far rolling point is clipped (hard case 6: forces saturate, M_O stays bounded).
 
-Signs of the state (seed notes 1.1; the contact law is stated for v > 0, w0 > 0): with
+Signs of the state (Equations §1.1; the contact law is stated for v > 0, w0 > 0): with
 p = sign(v) and q = sign(v) sign(w_d) the canonical problem is at (c', l') = (p c, q l), and
 F_x = p F_x', F_y = q F_y', moments = p q M' (mirror x -> -x flips v and w0: c, F_x, M change
 sign; mirror y -> -y flips w0 only: l, F_y, M change sign). [R] derived here and checked in the
 tests against the exact steady loads. In canonical form l' = q (l_set + R_c) - |v|/|w_d|, so a
 disc at rest under a sliding roller gives l' -> -inf on both sides of w_d = 0: the loads are
-continuous there. alpha' = 10 mu (b/a) |v/w_d|/R_r (eq. 21 with Hertz line contact, seed
-notes 1.7): R_c (b/a) 10 mu/R_r in steady running, -> 0 (rigid sliding, hard case 3) when v
+continuous there. alpha' = 10 mu (b/a) |v/w_d|/R_r (eq. 21 with Hertz line contact, Equations §1.7): R_c (b/a) 10 mu/R_r in steady running, -> 0 (rigid sliding, hard case 3) when v
 reverses at finite spin, which makes the loads continuous across v = 0 as well.
 
 Regularisation (hard cases 6, 7; [assumed] numerical): |l'|/a is clipped to the law's domain

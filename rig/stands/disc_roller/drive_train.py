@@ -1,4 +1,4 @@
-"""Stand B's drive train as an ODE (seed notes 4.2): roller shaft, gear loop, momentometer, disc.
+"""Stand B's drive train as an ODE (Equations §4.2): roller shaft, gear loop, momentometer, disc.
 
 States (only those of the built components; layout in :class:`StateLayout`):
     w_r   roller shaft 16 speed [rad/s]        (continuous drive; the swinging drive imposes it)
@@ -15,7 +15,7 @@ The contact acts on the roller with -F_x at radius R_r and on the disc with M_D 
 which transmits torque only, so the bearing 4 (dynamometers 5) carries the contact force: the
 true F_T, F_V signals are F_x, F_y. Rigid loop (no loop_compliance): w_d = w_r/i_g, one
 equation with J_R + J_d/i_g^2, and T_Mo = J_d w_d' - M_D + T_fd from the disc's balance.
-Stiff (seed notes 4.2: disc mode ~0.1-0.4 ms, loop ~30-200 ms): integrate with an implicit
+Stiff (Equations §4.2: disc mode ~0.1-0.4 ms, loop ~30-200 ms): integrate with an implicit
 method; the right-hand side is vectorised for solve_ivp's finite-difference Jacobian.
 """
 

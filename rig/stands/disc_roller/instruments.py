@@ -3,7 +3,7 @@
 The bridges feed the recorder MC 201A (sensors.recorder) which samples the true signals at its
 own rate; the log stores the digitised channels [V] and the calibration records, and the
 reduction converts them (never with the design sensitivity). Calibrations run once per run
-before the first point ("calibrated using special levers", seed 000 3.2 [text]): the
+before the first point ("calibrated using special levers", [Koziarski] section 3.2 [text]): the
 dynamometers with weights pulling along their axis (lever 1:1 [assumed]), the momentometer
 with weights on an arm (parameters.py).
 

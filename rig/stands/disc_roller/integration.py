@@ -1,6 +1,6 @@
 """Time integration of stand B's drive train: implicit, finite-difference Jacobian, settle detection.
 
-Radau IIA (order 5, L-stable) through scipy.integrate (the system is stiff: seed notes 4.2,
+Radau IIA (order 5, L-stable) through scipy.integrate (the system is stiff: Equations §4.2,
 hard case 10) with a forward-difference Jacobian from one vectorised call of the right-hand
 side; single states (the Newton iterations) go through its scalar form. Radau rather than BDF:
 with the contact relaxation the disc sits between the loop spring and the contact's tangential

@@ -1,9 +1,9 @@
 """Stand B's alpha' as the paper states it (effect "paper_alpha_range"), instead of eq. (21)'s Hertz estimate.
 
-Seed 000 3.2 gives alpha' "in calculated range from ca. 100 to ca. 1500" for F_N = 9 ... 144 N;
-eq. (21) with Hertz line contact (seed notes 3.2) gives alpha' = 10 mu (b/a) R_c/R_r = 10.6 ... 42.6
+[Koziarski] section 3.2 gives alpha' "in calculated range from ca. 100 to ca. 1500" for F_N = 9 ... 144 N;
+eq. (21) with Hertz line contact (Equations §3.2) gives alpha' = 10 mu (b/a) R_c/R_r = 10.6 ... 42.6
 at mu = 0.8 - 10 to 35 times less, and growing as sqrt(F_N) where the paper's grows almost as F_N.
-The seed notes call this unresolved. With the effect on, the contact runs at
+The Equations page calls this unresolved. With the effect on, the contact runs at
 
     alpha'_paper(F_N) = alpha_low (F_N/force_low)^k,  k = ln(alpha_high/alpha_low)/ln(force_high/force_low)
 
@@ -12,7 +12,7 @@ and at alpha'_paper (mu'/mu) for any other mu' (alpha' stays proportional to mu,
 How it maps to the contact: b/a and p0 stay Hertz's (the paper's b/a agree with Hertz), so the
 larger alpha' is a tangential compliance m(F_N) = alpha'_paper/alpha'_Hertz times Kalker's - the
 shear modulus of the creep problem G/m (m = 9.4 ... 35 here), like the author's calibration factor
-m of seed 000 ("factor of proportionality m ... to maintain conformity with the linear Kalker
+m of [Koziarski] ("factor of proportionality m ... to maintain conformity with the linear Kalker
 theory"). It is applied to the contact law (``AlphaScaledLaw``): the stand, its truth (which logs
 eq. 21's alpha') and the reduction (which computes eq. 21's alpha' from its readings) evaluate the
 same law, so the reduction stays consistent with the simulation by construction.
@@ -31,7 +31,7 @@ from rig.stands.disc_roller.contact import Law
 EFFECT = "paper_alpha_range"
 PARAMETERS = {"alpha_low": (100.0, "1"), "alpha_high": (1500.0, "1"), "force_low_N": (9.0, "N"),
               "force_high_N": (144.0, "N")}
-"""Defaults: seed 000 3.2, alpha' ca. 100 ... ca. 1500 for the dead weights 9 ... 144 N [text]."""
+"""Defaults: [Koziarski] section 3.2, alpha' ca. 100 ... ca. 1500 for the dead weights 9 ... 144 N [text]."""
 RANGES = {"alpha_low": (1.0, 1e5), "alpha_high": (1.0, 1e5), "force_low_N": (0.1, 1000.0),
           "force_high_N": (0.1, 1000.0)}
 

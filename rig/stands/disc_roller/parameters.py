@@ -2,8 +2,8 @@
 
 The ONE place for stand B's numbers. Geometry shared with the reduction is taken from
 rig.reduction.geometry.StandBGeometry (R_c, R_r, e = 70.2 mm, a) so that the simulator and
-rig.reduction.stand_b agree by construction; the rest follows seed notes 3.2 and 4.2. Sources
-start with [text] (stated in seed 000), [computed] (seed-notes arithmetic) or [assumed]
+rig.reduction.stand_b agree by construction; the rest follows Equations §3.2 and 4.2. Sources
+start with [text] (stated in [Koziarski]), [computed] (the Equations page's arithmetic) or [assumed]
 (plausible, not in the text; the reason is given).
 """
 
@@ -26,7 +26,7 @@ _GEOMETRY_SOURCE = {f.name: f"[{f.metadata['tag']}] {f.metadata['source']}" for 
 GRAVITY = 9.80665  # standard gravity [m/s^2]
 
 ROLLER_SPEEDS_RPM = (24.0, 48.0, 72.0)
-"""The three roller speeds of the continuous drive [rpm] (text, seed 000 3.2; seed notes 3.2)."""
+"""The three roller speeds of the continuous drive [rpm] (text, [Koziarski] section 3.2; Equations §3.2)."""
 
 PARAMETERS: Mapping[str, ParameterSpec] = {
     "radius_c_m": ParameterSpec(_GEOMETRY.radius_c, "m", 0.05, 0.3, _GEOMETRY_SOURCE["radius_c"]),
@@ -35,27 +35,27 @@ PARAMETERS: Mapping[str, ParameterSpec] = {
     "half_length_m": ParameterSpec(_GEOMETRY.a, "m", 1e-3, 0.02, _GEOMETRY_SOURCE["a"]),
     "contact_modulus_Pa": ParameterSpec(
         22.4e6, "Pa", 1e6, 1e9,
-        "[computed] seed notes 3.2: apparent E* of the rubber lining from b/a = 0.5/0.75/1/2 at 9/21/36/144 N",
+        "[computed] Equations §3.2: apparent E* of the rubber lining from b/a = 0.5/0.75/1/2 at 9/21/36/144 N",
     ),
-    "mu": ParameterSpec(0.8, "1", 0.05, 2.0, "[assumed] true friction coefficient rubber/PMMA (seed notes 3.2 uses 0.8); "
+    "mu": ParameterSpec(0.8, "1", 0.05, 2.0, "[assumed] true friction coefficient rubber/PMMA (Equations §3.2 uses 0.8); "
                         "with the contact effect pressure_exponent k: mu at friction_reference_pressure_Pa"),
     "friction_reference_pressure_Pa": ParameterSpec(
         1e6, "Pa", 1e3, 1e9,
         "[assumed] p_ref of a pressure-dependent mu = mu (p/p_ref)^-k (contact effect pressure_exponent; unused "
         "without it): 1 MPa, within the peak Hertz pressures 0.36-1.43 MPa of the 9-144 N dead weights",
     ),
-    "disc_inertia_kg_m2": ParameterSpec(0.07, "kg m^2", 1e-3, 1.0, "[assumed] seed notes 4.2: PMMA disc 400 x 20 mm + hub"),
-    "roller_inertia_kg_m2": ParameterSpec(3e-3, "kg m^2", 1e-4, 0.1, "[assumed] seed notes 4.2: roller hub + lining"),
+    "disc_inertia_kg_m2": ParameterSpec(0.07, "kg m^2", 1e-3, 1.0, "[assumed] Equations §4.2: PMMA disc 400 x 20 mm + hub"),
+    "roller_inertia_kg_m2": ParameterSpec(3e-3, "kg m^2", 1e-4, 0.1, "[assumed] Equations §4.2: roller hub + lining"),
     "motor_inertia_kg_m2": ParameterSpec(
-        1.5e-3, "kg m^2", 1e-4, 0.05, "[assumed] seed notes 4.2: 0.37 kW induction motor rotor (at the motor shaft)"
+        1.5e-3, "kg m^2", 1e-4, 0.05, "[assumed] Equations §4.2: 0.37 kW induction motor rotor (at the motor shaft)"
     ),
-    "worm_ratio": ParameterSpec(20.0, "1", 5.0, 80.0, "[assumed] seed notes 4.2: 1440 rpm / 20 = 72 rpm"),
+    "worm_ratio": ParameterSpec(20.0, "1", 5.0, 80.0, "[assumed] Equations §4.2: 1440 rpm / 20 = 72 rpm"),
     "worm_efficiency": ParameterSpec(
         0.45, "1", 0.2, 0.95,
         "[assumed] a self-locking worm (assumed: the seed names only 'the worm gear 22') needs a forward "
-        "efficiency below 0.5; seed notes 4.2 say 0.6-0.75",
+        "efficiency below 0.5; Equations §4.2 says 0.6-0.75",
     ),
-    "motor_rated_torque_N_m": ParameterSpec(2.45, "N m", 0.1, 50.0, "[computed] 370 W at 1440 rpm (seed notes 4.2 motor)"),
+    "motor_rated_torque_N_m": ParameterSpec(2.45, "N m", 0.1, 50.0, "[computed] 370 W at 1440 rpm (Equations §4.2 motor)"),
     "motor_rated_slip": ParameterSpec(0.04, "1", 0.005, 0.2, "[assumed] 1440 of 1500 rpm synchronous"),
     "spin_regularisation_rad_s": ParameterSpec(
         0.01, "rad/s", 1e-5, 0.5,
@@ -107,7 +107,7 @@ EFFECTS: Mapping[str, EffectSpec] = {
         {"disc_torque_N_m": (0.03, "N m"), "roller_torque_N_m": (0.03, "N m"), "speed_scale_rad_s": (0.02, "rad/s")},
     ),
     "contact_relaxation": EffectSpec(
-        "first-order lag of the contact loads dF/dt = (|v|/L_r)(F_ss - F), L_r = length_over_b * b (seed notes 4.2)",
+        "first-order lag of the contact loads dF/dt = (|v|/L_r)(F_ss - F), L_r = length_over_b * b (Equations §4.2)",
         {"length_over_b": (1.0, "1"), "speed_floor_m_s": (1e-3, "m/s")},
     ),
     "swinging_drive": EffectSpec(
@@ -125,7 +125,7 @@ EFFECTS: Mapping[str, EffectSpec] = {
         {"mu_low": (0.5, "1"), "mu_high": (1.0, "1")},
     ),
     paper_alpha.EFFECT: EffectSpec(
-        "the contact runs at the paper's stated alpha' (ca. 100 ... ca. 1500 for 9 ... 144 N, seed 000 3.2; a power "
+        "the contact runs at the paper's stated alpha' (ca. 100 ... ca. 1500 for 9 ... 144 N, [Koziarski] section 3.2; a power "
         "law in F_N through both ends) instead of eq. (21)'s Hertz estimate (10.6 ... 42.6 at mu = 0.8): b/a and p0 "
         "stay Hertz's, the creep problem's compliance is m = alpha'_paper/alpha'_Hertz times Kalker's "
         "(rig.stands.disc_roller.paper_alpha)",
@@ -204,7 +204,7 @@ class StandBParameters:
 
     @property
     def gear_ratio(self) -> float:
-        """i_g = omega_roller/omega_disc = R_c/R_r [1] (2.661, seed notes 3.2)."""
+        """i_g = omega_roller/omega_disc = R_c/R_r [1] (2.661, Equations §3.2)."""
         return self.radius_c / self.roller_radius
 
     def roller_speed(self, speed_step: int) -> float:
@@ -214,7 +214,7 @@ class StandBParameters:
     def b_over_a(self, normal_force: float) -> float:
         """Hertz line contact of the roller on the flat disc: b = sqrt(4 F_N R_r/(pi 2a E*)) over a [1].
 
-        Seed notes 3.2: gives 0.500/0.764/1.000/2.000 at 9/21/36/144 N (text: 0.75 at 21 N).
+        Equations §3.2: gives 0.500/0.764/1.000/2.000 at 9/21/36/144 N (text: 0.75 at 21 N).
         """
         f = validate.number("normal_force", normal_force, 0.0, lo_open=True)
         b = math.sqrt(4.0 * f * self.roller_radius / (math.pi * 2.0 * self.half_length * self.contact_modulus))
@@ -238,7 +238,7 @@ class StandBParameters:
                                          pressure_exponent)
 
     def alpha_prime(self, normal_force: float, mu: float | None = None) -> float:
-        """alpha' = 10 mu (b/a) (v/w0)/R_x with v/w0 = R_c, R_x = R_r (eq. 21, seed notes 1.7, 3.2) [1];
+        """alpha' = 10 mu (b/a) (v/w0)/R_x with v/w0 = R_c, R_x = R_r (eq. 21, Equations §1.7, 3.2) [1];
         mu: the coefficient the contact runs at (None: the parameter mu; see :meth:`friction`)."""
         mu = self.mu if mu is None else mu
         return 10.0 * mu * self.b_over_a(normal_force) * self.radius_c / self.roller_radius

@@ -1,7 +1,7 @@
 """Quasi-static operating point of stand B's continuous drive, solved directly (no ODE).
 
 In steady running the gear loop fixes w_r = i_g w_d, so the rolling point sits at l = l_set
-exactly (seed notes 3.2: the rolling point is kinematic) and the contact loads are the steady
+exactly (Equations §3.2: the rolling point is kinematic) and the contact loads are the steady
 law at (l_set, c) in the running direction. The balances of the drive-train equations with
 zero derivatives then give, in order:
     T_Mo = -M_D + T_fd(w_d),  M_D = M_C + R_c F_x    (disc; = -(M_C + R_c F_x) without friction)

@@ -8,7 +8,7 @@ moment T0 = mu a F_N nu_0 >= 0 resisting the spin - the quantity the reduction's
 M_C = T_Mo + R_c F_T estimates (docs/stand-b.md, signs); ``M_C_disc`` is the signed moment
 about C on the disc in the stand frame. ``mu_v`` and ``mu_T`` repeat mu (the reduced table's
 ``true_`` columns). Swinging drive: mu, b/a, alpha', the settings, the stroke ratio e
-(seed 002 S15) and the amplitudes of the true signals over the gate.
+([Oscillating] S15) and the amplitudes of the true signals over the gate.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Stand A of seed 000 (the yoke/spring stand, Figs. 8-9): ``rig.stands.yoke.stand.YokeStand``.
+"""Stand A of [Koziarski] (the yoke/spring stand, Figs. 8-9): ``rig.stands.yoke.stand.YokeStand``.
 
 Modules: parameters (every parameter, effect and setting with its source), contact_forces (the
 contact at the instantaneous wheel speeds), drive_train (the ODE), brake (feedback loop and its

@@ -1,7 +1,7 @@
-"""Shoe brake 12 on drum 11 with mechanical feedback (seed 000 3.1.1: "automatic stabilization of
+"""Shoe brake 12 on drum 11 with mechanical feedback ([Koziarski] section 3.1.1: "automatic stabilization of
 the value of loading moment T2"), and the brake-lining friction fluctuation it has to reject.
 
-Model [reconstructed; the paper gives no details of the mechanism, seed notes 4.1]: the brake's
+Model [reconstructed; the paper gives no details of the mechanism, Equations §4.1]: the brake's
 reaction moment T_B swings a lever against the set-point spring; the lever deflection tightens
 the shoe. Lever, shoe linkage and lining build-up are three first-order lags, so with the error
 e = r - T_B (moment units [N m])

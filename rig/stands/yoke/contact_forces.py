@@ -9,18 +9,18 @@ From the wheel speeds (w1, w2) [rad/s] to what the drive train needs (vectorised
     alpha' = 10 mu (b/a)(v/w0)/R_x,  v = w1 r1                        eq. (21), line contact
     (nu_T, nu_v, nu_0) = law(l/a, c/a, alpha')                        the scene's contact law
     F_x = mu F_N nu_T, F_y = mu F_N nu_v, M_C = -mu a F_N nu_0        eqs. (26)-(28), w0 > 0
-    M_O = M_C + (c + f) F_y - l F_x                                   seed notes 1.1 (f: rolling length,
+    M_O = M_C + (c + f) F_y - l F_x                                   Equations §1.1 (f: rolling length,
                                                                       0 unless that contact effect is on)
     T1 = sin(alpha1) (M_O + l1 F_x)            moment on wheel 1 in its sense of rotation
     T2 = M_O - Delta h F_y + l2 F_x            moment on wheel 2 in its sense of rotation (= -M_2)
 
-T1 and T2 are the seed notes' T1,contact and -M_2 of eq. (34) written with M_O instead of M_C
+T1 and T2 are the Equations page's T1,contact and -M_2 of eq. (34) written with M_O instead of M_C
 (identical algebra), so they stay finite when the rolling point runs off to infinity. The power
 balance w1 T1 + w2 T2 = w0 M_C = -P_t <= 0 holds exactly (tests). alpha' uses the reduction's
 own function (rig.reduction.equations.alpha_prime_line_contact): the stand and the reduction
 agree by construction (eq. 21 with p0 = b E*/(2 R_x) and E = 2E*, so E cancels).
 
-Hard cases (seed notes 7), decided here [our choices, docs/stand-a.md]:
+Hard cases (docs: Hard cases), decided here [our choices, docs/stand-a.md]:
 * spin w0 < 0 (wheel 2 reversed faster than w01): mirror y (l -> -l; F_y, M_O change sign), as
   rig.contact.physical does;
 * rolling point outside the law's domain (start-up: w2 = 0 puts C at A1, l/a ~ 35; hard case 6):

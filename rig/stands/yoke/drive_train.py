@@ -1,4 +1,4 @@
-"""Stand A's drive train as a rigid-body ODE (seed notes 4.1), vectorised for a finite-difference Jacobian.
+"""Stand A's drive train as a rigid-body ODE (Equations §4.1), vectorised for a finite-difference Jacobian.
 
 States (those of an effect exist only when the effect is built):
 
@@ -14,7 +14,7 @@ States (those of an effect exist only when the effect is built):
     brake loop   see rig.stands.yoke.brake (T_B = set-point when "brake_dynamics" is off)
 
 T1, T2: contact moments on the wheels in their senses of rotation (rig.stands.yoke.contact_forces;
-the seed notes' T1,contact enters with the opposite sign there because it is defined as the
+the Equations page's T1,contact enters with the opposite sign there because it is defined as the
 resisting moment). w_ref(t) ramps smoothly from the previous point's speed to the new set-point
 over ``speed_ramp_s`` (start from rest: from 0). PI tuning [assumed]: K_p = (J_m + J_1) w_bw,
 K_i = K_p w_bw/4; coupling damping d_c = 2 zeta sqrt(k_c J_m J_1/(J_m + J_1)).

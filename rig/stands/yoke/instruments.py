@@ -4,13 +4,13 @@
   angle at the gate opening is random per point (seeded), which gives the +-1 count quantisation.
 * Dynamometer 10 holds the yoke at the lever ``dynamometer_lever`` (102 mm) from axle 4 against
   F_y at R_v (42.5 mm): F_dyn = F_y R_v/102 mm (eq. 33, T_v = F_y R_v). Sign: a positive F_y (on
-  wheel 1, seed notes 1.1) gives a positive reading [our mounting convention]. Its output is
+  wheel 1, Equations §1.1) gives a positive reading [our mounting convention]. Its output is
   sampled at ``dynamometer_rate_Hz`` over the gate; the drift (if on) is one random walk over the
   run, evaluated at the point's place in the run schedule (calibration first, then point k at
   calibration end + k ``point_period_s``), so points stay independent yet share one drift path.
   Each point records what the reduction needs for the zero's drift since the calibration
   (:func:`zero_drift_readings`: gain, the walk's variance rate, the zero's age).
-* Calibration once per run with weights at the dynamometer itself (seed 000 3.1.1: weights of
+* Calibration once per run with weights at the dynamometer itself ([Koziarski] section 3.1.1: weights of
   +-0.098 N accuracy, 102/42.5 x 0.098 N = 0.235 N on F_y): the calibrated quantity is the force
   on the dynamometer [N]; the weights' uncertainty is inside the fit's covariance.
 * Tangent balance: the brake's reaction moment at the arm ``balance_arm`` (0.400 m), rounded to the

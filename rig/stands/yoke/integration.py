@@ -1,7 +1,6 @@
 """Implicit integration of the drive train: settle detection and the gate (scipy.integrate).
 
-The system is stiff (contact mode ~1-3 ms, coupling ~100 Hz, brake 0.1 s, tests ~10 s; seed
-notes 4.1): an implicit method (Radau, L-stable) with the drive train's analytic Jacobian
+The system is stiff (contact mode ~1-3 ms, coupling ~100 Hz, brake 0.1 s, tests ~10 s; Equations §4.1): an implicit method (Radau, L-stable) with the drive train's analytic Jacobian
 (DriveTrain.jacobian). During the gate the state is near steady, so the step is limited only by
 accuracy (max_step = gate time); the true signals (wheel angles for the counters, forces,
 moments) are sampled from the dense output at GATE_SAMPLE_RATE_HZ.

@@ -27,7 +27,7 @@ C_MIN = 0.9  # [1]
 MU_MIN, MU_MAX = 0.1, 1.2  # a-priori range of friction coefficients of the pair [1] (assumed)
 ALPHA_MARGIN = 1.5  # the alpha' domain reaches this factor past the range's ends: a reduction at mu = MU_MIN
 # or MU_MAX perturbs its inputs (first-order uncertainties) and moves alpha' by ~15 % (issue 14) [1]
-SHAPE = "line"  # stand A: line contact (seed 000 3.1: "Linear contact was applied")
+SHAPE = "line"  # stand A: line contact ([Koziarski] section 3.1: "Linear contact was applied")
 
 LawFactory = Callable[[ContactSpec, str, float, TableDomain], Law]
 

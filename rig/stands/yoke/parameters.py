@@ -1,7 +1,7 @@
-"""Every parameter of stand A (the yoke/spring stand, seed 000 Figs. 8-9) in ONE place.
+"""Every parameter of stand A (the yoke/spring stand, [Koziarski] Figs. 8-9) in ONE place.
 
-Each entry says where its default comes from: [text] stated in seed 000, [computed] arithmetic on
-the text (seed notes 3.1), [assumed] a plausible value of ours with the reason (seed notes 4.1
+Each entry says where its default comes from: [text] stated in [Koziarski], [computed] arithmetic on
+the text (Equations §3.1), [assumed] a plausible value of ours with the reason (Equations §4.1
 gives most of the drive-train values). Geometry defaults are not repeated here: they are read
 from :class:`rig.reduction.geometry.StandAGeometry` (the reduction's view of the same stand), so
 the simulator and the reduction cannot drift apart. Units are SI and part of every name.
@@ -49,18 +49,18 @@ def _from_geometry(name: str) -> ParameterSpec:
 
 PARAMETERS: Mapping[str, ParameterSpec] = MappingProxyType({
     **{name: _from_geometry(name) for name in GEOMETRY_FIELDS},
-    "mu": ParameterSpec(0.4, "1", MU_MIN, MU_MAX, "[assumed] true friction coefficient of the pair (seed notes 3.1: "
+    "mu": ParameterSpec(0.4, "1", MU_MIN, MU_MAX, "[assumed] true friction coefficient of the pair (Equations §3.1: "
                         "textolite on steel ~0.4, Niemann); one value for every slip direction, as the paper "
                         "assumes; range = the contact-law tables' a-priori range (rig.stands.yoke.laws)"),
-    "E_lam_Pa": ParameterSpec(4.5e9, "Pa", 1e8, 1e11, "[assumed] laminate modulus (seed notes 3.1: 4.5 GPa makes "
+    "E_lam_Pa": ParameterSpec(4.5e9, "Pa", 1e8, 1e11, "[assumed] laminate modulus (Equations §3.1: 4.5 GPa makes "
                               "a Hertz line contact of a = 1.215 mm give b/a = 1 at 96.2 N); enters p0 only"),
-    "poisson_lam": ParameterSpec(0.3, "1", 0.0, 0.5, "[assumed] laminate Poisson ratio (seed notes 3.1)"),
+    "poisson_lam": ParameterSpec(0.3, "1", 0.0, 0.5, "[assumed] laminate Poisson ratio (Equations §3.1)"),
     "J_1_kg_m2": ParameterSpec(1.0e-3, "kg m^2", 1e-5, 1.0, "[assumed] wheel 1 + shaft + strobe disc 13 "
-                               "(seed notes 4.1: steel wheel 82 x 20 mm ~ 7e-4)"),
+                               "(Equations §4.1: steel wheel 82 x 20 mm ~ 7e-4)"),
     "J_2_kg_m2": ParameterSpec(4.0e-3, "kg m^2", 1e-5, 1.0, "[assumed] lined disc + drum 11 + strobe disc 14 "
-                               "(seed notes 4.1)"),
+                               "(Equations §4.1)"),
     "marks_1": ParameterSpec(60, "1", 1, 10_000, "[assumed] marks on strobe disc 13 (not given; 60 gives "
-                             "~4800 counts in a 20 s gate, seed notes 2)"),
+                             "~4800 counts in a 20 s gate, Equations §2)"),
     "marks_2": ParameterSpec(60, "1", 1, 10_000, "[assumed] marks on strobe disc 14"),
     "timer_u_s": ParameterSpec(1e-4, "s", 0.0, 1.0, "[assumed] standard uncertainty of the gate time of timer 22 "
                                "(cancels in i_k and alpha')"),
@@ -117,7 +117,7 @@ EFFECTS: Mapping[str, EffectSpec] = MappingProxyType({
     "counter_pulse_noise": EffectSpec("photocell pulse-amplitude scatter (a pulse below the threshold is missed)",
                                       {"std_V": (0.00625, "V")}),
     "calibration_weight_error": EffectSpec("true weights of the calibration pieces differ from nominal "
-                                           "(uniform within +-0.098 N, seed 000)"),
+                                           "(uniform within +-0.098 N, [Koziarski])"),
     "load_device": EffectSpec("an idealised load device on wheel 2 that can also drive it: negative brake "
                               "set-points (rolling point at l < 0), same loop and regularisation as the brake; "
                               "not in the paper; off: shoe brake 12 only brakes, T_set >= 0"),

@@ -1,4 +1,4 @@
-"""Stand A of seed 000 (Figs. 8-9, 3.1): the yoke/spring stand as a digital twin.
+"""Stand A of [Koziarski] (Figs. 8-9, 3.1): the yoke/spring stand as a digital twin.
 
     YokeStand(parameters, effects, contact, drive)   # rig.stands.base.Stand
     stand.calibrate(seed); point = stand.start_point(k, settings, previous, seed)

@@ -1,13 +1,13 @@
 """The quasi-static operating point of stand A: wheel 2's speed for a given brake moment, solved directly.
 
 In steady running wheel 1 turns at the set speed w1 (ideal source, or the PI motor without
-static error) and wheel 2 is in moment balance (drive train, seed notes 4.1, with w2' = 0):
+static error) and wheel 2 is in moment balance (drive train, Equations §4.1, with w2' = 0):
 
     T2(w1, w2) = T_B tanh(w2/eps) + T_f2(w2)        T2: contact moment on wheel 2, eq. (34)
 
 The unknown is searched as the rolling point l in (l2, l1) (eq. 30 inverted: w2 = w1 i_k(l),
 rig.wheel_kinematics.ratio_for_l): the balance is monotone in l (more braking moves C towards
-A1, seed notes 2) and the bracket is finite. A 1-D root find (scipy brentq) to 1e-12 m in l.
+A1, Equations §2) and the bracket is finite. A 1-D root find (scipy brentq) to 1e-12 m in l.
 A set-point the contact cannot hold - wheel 2 would stall (T_set above the moment at w2 -> 0)
 or would have to overrun without limit - raises ParameterError naming brake_setpoint_N_m and the
 attainable range. The steady brake moment is T_set exactly (brake loop at nominal lining
@@ -35,7 +35,7 @@ STALL_RATIO = 10.0  # w2 must exceed this many brake eps for the brake to slip (
 class OperatingPoint:
     """Steady state: w1, w2 [rad/s], the contact there, brake moment T_B [N m], bearing moments
     T_f1, T_f2 [N m]; slope = d(T2 - T_f2)/d w2 at constant w1 [N m s/rad] (< 0: the contact
-    stiffness that makes w2 follow the brake moment, seed notes 4.1 "Stiffness")."""
+    stiffness that makes w2 follow the brake moment, Equations §4.1 "Stiffness")."""
 
     omega_1: float
     omega_2: float

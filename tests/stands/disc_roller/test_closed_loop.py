@@ -14,7 +14,7 @@ from rig.stands.base import DriveMode
 from tests.stands.disc_roller.conftest import make_stand, settings
 
 MU = 0.8
-L_SWEEP_MM = (-20.0, -10.0, -3.2, 0.0, 3.2, 10.0, 20.0)  # seed notes 3.2 (l/a = 0, +-0.8, +-2.5, +-5)
+L_SWEEP_MM = (-20.0, -10.0, -3.2, 0.0, 3.2, 10.0, 20.0)  # Equations §3.2 (l/a = 0, +-0.8, +-2.5, +-5)
 
 
 def simulate(stand, points, path, seed=11, gate=2.0):

@@ -85,7 +85,7 @@ def test_steady_loads_forward_and_reverse():
 
 
 def test_rigid_model_against_the_full_sliding_table():
-    """Seed notes 1.10(a), line contact b/a = 1, l/a = 0.5, c = 0: nu_T = -0.44604, nu_0 = 0.82383."""
+    """Equations §1.10(a), line contact b/a = 1, l/a = 0.5, c = 0: nu_T = -0.44604, nu_0 = 0.82383."""
     law = make_contact_law(ContactSpec("rigid", 48, 0.5, surrogate=False), "line", 1.0, None)
     cp = point(law=law, l_set=0.5 * A, c=0.0)
     steady = cp.steady(1)

@@ -24,7 +24,7 @@ def test_steady_torques_follow_the_moment_transfer_and_the_energy_balance():
     train = stand.drive_train(point_settings(settings()))
     ss = steady_state(train, 1)
     c = ss.contact
-    # disc: T_Mo = -(M_C + R_c F_x) (docs/stand-b.md, seed notes 3.2 transfer with the disc as body 1)
+    # disc: T_Mo = -(M_C + R_c F_x) (docs/stand-b.md, Equations §3.2 transfer with the disc as body 1)
     assert ss.momentometer_torque == pytest.approx(-(c.moment_c + train.radius_c * c.force_x), rel=1e-12)
     # the worm supplies exactly the friction power: T_w w_r = P_t = T0 w_d, i.e. T_w = T0/i_g
     t_w = float(train.worm.torque(np.asarray(ss.roller_speed), train.set_speed))
@@ -128,7 +128,7 @@ def test_swinging_drive_settles_periodically():
     assert report.duration_s == pytest.approx(round(report.duration_s * 2.0) / 2.0)  # whole periods
     gate = point.gate(0.5)
     truth = point.read(gate).truth
-    # seed 002 S15: e = R_r 2 theta_A/(2 b) = 62.5 mm * 2 * 15 deg/(2 * 4 mm) = 4.09
+    # [Oscillating] S15: e = R_r 2 theta_A/(2 b) = 62.5 mm * 2 * 15 deg/(2 * 4 mm) = 4.09
     assert truth["stroke_ratio"].value == pytest.approx(62.5 * 2 * math.radians(15) / 8.0, rel=1e-3)
     assert np.all(np.isfinite(gate.signals["F_T"])) and np.max(np.abs(gate.signals["T_Mo"])) > 0.0
 

@@ -25,14 +25,14 @@ def _stand(effects):
 
 
 def test_the_paper_range_ends_are_the_texts():
-    """Seed 000 3.2: alpha' ca. 100 at 9 N and ca. 1500 at 144 N; in between a power law, k = ln 15/ln 16."""
+    """[Koziarski] section 3.2: alpha' ca. 100 at 9 N and ca. 1500 at 144 N; in between a power law, k = ln 15/ln 16."""
     assert paper_alpha_prime(DEFAULTS, 9.0) == pytest.approx(100.0)
     assert paper_alpha_prime(DEFAULTS, 144.0) == pytest.approx(1500.0)
     assert paper_alpha_prime(DEFAULTS, 36.0) == pytest.approx(100.0 * 4.0 ** (math.log(15) / math.log(16)))
 
 
 def test_the_contact_runs_at_the_paper_alpha_with_the_effect_and_at_eq_21_without():
-    """Seed notes 3.2: eq. (21) gives 10.6 / 42.6 at 9 / 144 N (mu = 0.8); the effect turns them into 100 / 1500,
+    """Equations §3.2: eq. (21) gives 10.6 / 42.6 at 9 / 144 N (mu = 0.8); the effect turns them into 100 / 1500,
     through the law, so the stand and the reduction (which computes eq. 21's alpha') evaluate the same thing."""
     hertz, paper = _stand({}), _stand({"paper_alpha_range": {}})
     for force, expected_hertz, expected_paper in ((9.0, 10.6, 100.0), (144.0, 42.6, 1500.0)):

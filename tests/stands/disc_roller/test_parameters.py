@@ -1,4 +1,4 @@
-"""Stand B parameters against the seed notes' arithmetic (3.2, 4.2) and the named errors."""
+"""Stand B parameters against the Equations page's arithmetic (3.2, 4.2) and the named errors."""
 
 from __future__ import annotations
 
@@ -16,19 +16,19 @@ SETTINGS = dict(normal_force_N=36.0, l_m=0.0, sigma_rad=0.0, speed_step=1, direc
 
 @pytest.mark.parametrize("load, b_over_a", [(9.0, 0.5), (21.0, 0.764), (36.0, 1.0), (144.0, 2.0)])
 def test_b_over_a_from_hertz_with_the_apparent_modulus(load, b_over_a):
-    # seed notes 3.2: E* = 22.4 MPa gives b = 2, 3.06, 4, 8 mm (text 0.75 at 21 N; b ~ sqrt(F_N) gives 0.764)
+    # Equations §3.2: E* = 22.4 MPa gives b = 2, 3.06, 4, 8 mm (text 0.75 at 21 N; b ~ sqrt(F_N) gives 0.764)
     assert PARAMS.b_over_a(load) == pytest.approx(b_over_a, rel=2e-3)
 
 
 @pytest.mark.parametrize("load, alpha", [(9.0, 10.6), (36.0, 21.3), (144.0, 42.6)])
 def test_alpha_prime_is_26_6_mu_b_over_a(load, alpha):
-    # seed notes 3.2: alpha' = 10 mu (b/a)(R_c/R_r) = 26.6 mu (b/a) = 10.6 / 21.3 / 42.6 for mu = 0.8
+    # Equations §3.2: alpha' = 10 mu (b/a)(R_c/R_r) = 26.6 mu (b/a) = 10.6 / 21.3 / 42.6 for mu = 0.8
     assert PARAMS.alpha_prime(load) == pytest.approx(alpha, abs=0.05)  # printed to 3 digits
 
 
 def test_kinematics_of_the_gear_loop():
-    assert PARAMS.gear_ratio == pytest.approx(2.661, abs=5e-4)  # seed notes 3.2
-    # 24/48/72 rpm roller -> disc 0.945/1.889/2.834 rad/s, v = 0.157/0.314/0.471 m/s (seed notes 3.2)
+    assert PARAMS.gear_ratio == pytest.approx(2.661, abs=5e-4)  # Equations §3.2
+    # 24/48/72 rpm roller -> disc 0.945/1.889/2.834 rad/s, v = 0.157/0.314/0.471 m/s (Equations §3.2)
     for step, disc, v in ((1, 0.945, 0.157), (2, 1.889, 0.314), (3, 2.834, 0.471)):
         w_r = PARAMS.roller_speed(step)
         assert w_r / PARAMS.gear_ratio == pytest.approx(disc, abs=1e-3)
@@ -44,7 +44,7 @@ def test_twist_of_eq_36_and_shared_geometry():
 def test_momentometer_stiffness_is_the_loop_compliance():
     k = P.EFFECTS["loop_compliance"].parameters["stiffness_N_m_per_rad"][0]
     assert k == pytest.approx(3.26e3, rel=2e-3)  # docs/instruments.md
-    assert 2e3 <= k <= 1e4  # seed notes 4.2 range
+    assert 2e3 <= k <= 1e4  # Equations §4.2 range
 
 
 def test_every_parameter_has_a_tagged_source_and_its_default_in_range():

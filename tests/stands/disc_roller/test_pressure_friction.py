@@ -24,7 +24,7 @@ def _truth(stand, force):
 
 
 def test_peak_pressure_is_hertz_line_contact():
-    """p0 = F_N/(pi a b): 36 N on 2a = 8 mm with b = a = 4 mm (seed notes 3.2) is 716 kPa."""
+    """p0 = F_N/(pi a b): 36 N on 2a = 8 mm with b = a = 4 mm (Equations §3.2) is 716 kPa."""
     assert _stand({}).params.peak_pressure(36.0) == pytest.approx(36.0 / (math.pi * 0.004 * 0.004), rel=1e-3)
 
 

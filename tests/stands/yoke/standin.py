@@ -1,6 +1,6 @@
 """A tiny closed-form stand-in for rig.stands.contact_law (vectorised, smooth, cheap).
 
-Shaped like the line-contact models near full sliding (seed notes 1.10, 3.1): nu_T ~ -l/|C|,
+Shaped like the line-contact models near full sliding (Equations §1.10, 3.1): nu_T ~ -l/|C|,
 nu_v from c and from the spin (elastic part, grows with alpha'), nu_0 ~ |C|/a far out; the
 elastic factor 1/(1 + alpha'/3) makes mu identifiable from alpha' (eq. 21).
 """

@@ -27,12 +27,12 @@ def write_sweep(st, path, brakes, *, seed=11, gate_time=20.0, **setting):
 
 
 def test_text_speed_data_at_l_near_0_from_the_counters():
-    # seed 000 3.1.1: 240 rpm of wheel 1, w0/w1 = 1.77, w0 = 44 rad/s (seed notes 3.1: 1.77 x 25.13 = 44.5)
+    # [Koziarski] section 3.1.1: 240 rpm of wheel 1, w0/w1 = 1.77, w0 = 44 rad/s (Equations §3.1: 1.77 x 25.13 = 44.5)
     st = helpers.stand(("drive_compliance", "brake_dynamics", "load_device"))  # l = 0 needs T_set ~ -0.03 N m
     w1 = 240 * 2 * math.pi / 60
     s0 = helpers.settings(omega=w1)
     g = st.params.geometry
-    i_k0 = g.r1 / -g.l2  # at l = 0 the peripheral speeds are equal: w1 r1 = w2 r2 (seed notes 3.1)
+    i_k0 = g.r1 / -g.l2  # at l = 0 the peripheral speeds are equal: w1 r1 = w2 r2 (Equations §3.1)
     brake = st.contact_for(s0).moments_scalar(w1, w1 * i_k0)[1]  # the set-point that puts C at l = 0
     s = helpers.settings(brake=brake, omega=w1)
     _, _, out = helpers.run_point(st, s, s, gate_time=20.0)

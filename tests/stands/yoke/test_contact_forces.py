@@ -51,7 +51,7 @@ def test_inside_the_domain_the_law_and_the_reductions_relations_hold(l_over_a):
 @settings(max_examples=200, deadline=None)
 @given(st.floats(-60.0, 60.0), st.floats(-60.0, 60.0))
 def test_power_balance_holds_everywhere_and_nothing_is_nan(w1, w2):
-    # w1 T1 + w2 T2 = w0 M_C (seed notes 1.2: P_t = -w0 M_C >= 0 is the loss) - also in the far field
+    # w1 T1 + w2 T2 = w0 M_C (Equations §1.2: P_t = -w0 M_C >= 0 is the loss) - also in the far field
     c = contact()
     s = c.evaluate(w1, w2)
     for name in ("F_x", "F_y", "M_O", "T1", "T2", "nu_T", "nu_v"):

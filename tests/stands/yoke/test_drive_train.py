@@ -36,7 +36,7 @@ def test_steady_state_balances_wheel_2_and_the_dynamic_drive_converges_to_it():
     s = helpers.settings(brake=0.4)
     report, gate, out = helpers.run_point(st_, s, None, gate_time=2.0)
     target = st_.start_point(0, s, None, 1).target
-    # the balance of seed notes 4.1 with w2' = 0: T2 = T_B + T_f2
+    # the balance of Equations §4.1 with w2' = 0: T2 = T_B + T_f2
     assert float(target.contact.T2) == pytest.approx(0.4 + target.friction_2, rel=1e-10)
     assert out.truth["omega_2"].value == pytest.approx(target.omega_2, rel=2e-4)
     assert out.truth["omega_1"].value == pytest.approx(25.13, rel=2e-4)  # PI motor: no static speed error
@@ -115,7 +115,7 @@ def test_quasi_static_drive_refuses_dynamic_effects():
 
 
 def test_contact_stiffness_matches_the_seed_notes_estimate(tmp_path, monkeypatch):
-    # seed notes 4.1: dT2/dw2 ~ 1.7 N m s/rad at 96.2 N -> tau = J2/1.7 ~ 2.4 ms (0.6 ms at 385 N),
+    # Equations §4.1: dT2/dw2 ~ 1.7 N m s/rad at 96.2 N -> tau = J2/1.7 ~ 2.4 ms (0.6 ms at 385 N),
     # estimated there with d nu_T/d(l/a) ~ 1; here with the rigid full-sliding law (a real surrogate table)
     monkeypatch.setenv("RIG_CACHE_DIR", str(tmp_path))
     st_ = YokeStand({}, {}, ContactSpec("rigid", None, 0.3, table_points=(41, 5, 5)), DriveMode.QUASI_STATIC)

@@ -28,7 +28,7 @@ def test_geometry_defaults_are_the_reductions_values_not_copies():
 
 
 def test_text_numbers_of_seed_000():
-    # seed 000 3.1: 102 mm lever, R_v = 42.5 mm (printed 42.2), 0.098 N weights -> 0.235 N on F_y
+    # [Koziarski] section 3.1: 102 mm lever, R_v = 42.5 mm (printed 42.2), 0.098 N weights -> 0.235 N on F_y
     g = P.resolve({}).geometry
     assert g.dynamometer_lever == 0.102 and g.yoke_lever == 0.0425
     assert g.lateral_force_half_width == pytest.approx(0.235, abs=5e-4)

@@ -35,7 +35,7 @@ def test_readings_come_from_the_record(logged):
     g = st.params.geometry_at(1.06e-3)
     r = point_readings(record, st.params, g, "here")
     assert (r.counts_1, r.marks_1) == (record.counters.counters["wheel_1"].count, 60)
-    assert r.b_over_a == 2.0  # b/a = 2 at 385 N (seed 000)
+    assert r.b_over_a == 2.0  # b/a = 2 at 385 N ([Koziarski])
     assert r.normal_force.value == 385.0 and r.normal_force.u == st.params.normal_force_u_N
     # the balance's 0.049 N step at the 0.4 m arm is a rectangular bias of the mean reading
     # default balance_step_N = 0.098 N: the paper's 0.0196 N m read as a +-limit, u = 0.0196/sqrt(3)
