@@ -1,7 +1,13 @@
-"""Tutorial step 1: Coulomb's "slowly increasing force" experiment ([Zhao] slides 13 and 17).
+"""
+Step 1: static and kinetic friction: the slowly increasing force
+================================================================
+
+Coulomb's "slowly increasing force" experiment ([Zhao] slides 13 and 17).
 
 A 2 kg steel block on a steel plane is pulled by F = k t. It sticks (T = F) until F reaches
 mu_s N, then the micro-welds shear, T drops to mu_k N and the block accelerates.
+
+Run it from the repository root::
 
     python experiments/tutorial/step01_pull_test.py [-o out/tutorial]
 
@@ -63,5 +69,18 @@ def main(argv: list[str] | None = None) -> list[Path]:
     return write_step(fig, table, args.output, STEM)
 
 
+# %%
+# Run the step: it writes the figure and the numbers behind it (a CSV with units in the column
+# names) into its output folder, ``out/tutorial`` unless ``-o`` says otherwise.
+
 if __name__ == "__main__":
     print("wrote", *main())
+
+# %%
+# **What to look at.**
+# Left: T follows the dotted line T = F up to mu_s N = 15.7 N (2 kg block), then jumps down to mu_k N = 11.8 N
+# and stays there however hard one pulls. Right: the block starts to move at t* = mu_s N/k = 7.8 s; the speed
+# grows because F - mu_k N keeps growing.
+#
+# The questions that go with this step, and their answers, are on the tutorial page of the user guide.
+

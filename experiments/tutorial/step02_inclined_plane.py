@@ -1,8 +1,14 @@
-"""Tutorial step 2: a body on an inclined plane ([Zhao] slides 15-16 and 20-21).
+"""
+Step 2: the inclined plane
+==========================
+
+A body on an inclined plane ([Zhao] slides 15-16 and 20-21).
 
 At rest iff tan(alpha) <= mu_s, whatever the mass; sliding down, a = g (sin(alpha) - mu_k cos(alpha)),
 less than the frictionless g sin(alpha). The left panel places the pairs of [Zhao]'s table on
 the rest/slide map; the right panel shows the acceleration against the inclination.
+
+Run it from the repository root::
 
     python experiments/tutorial/step02_inclined_plane.py [-o out/tutorial]
 
@@ -73,5 +79,19 @@ def main(argv: list[str] | None = None) -> list[Path]:
     return write_step(fig, table, args.output, STEM)
 
 
+# %%
+# Run the step: it writes the figure and the numbers behind it (a CSV with units in the column
+# names) into its output folder, ``out/tutorial`` unless ``-o`` says otherwise.
+
 if __name__ == "__main__":
     print("wrote", *main())
+
+# %%
+# **What to look at.**
+# Left: the critical inclination alpha* = atan(mu_s) where tan(alpha) meets mu_s: 2.3 deg for steel-PTFE, 26.6
+# deg for wood-wood (upper value), 38.7 deg for steel-steel, 45 deg for concrete-rubber. Right: every friction
+# curve lies below the frictionless one and starts at alpha = atan(mu_k), where sliding is steady (a = 0); the
+# shaded band is where a body placed at rest stays at rest for mu_s = 0.8.
+#
+# The questions that go with this step, and their answers, are on the tutorial page of the user guide.
+

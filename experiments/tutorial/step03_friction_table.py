@@ -1,8 +1,14 @@
-"""Tutorial step 3: [Zhao]'s table of friction coefficients, and where the slides contradict it.
+"""
+Step 3: the table of friction coefficients, and a contradiction
+===============================================================
+
+[Zhao]'s table of friction coefficients, and where the slides contradict it.
 
 Static coefficients of slide 19 (dry and clean, lubricated, wet) as bars, slide 18's quoted
 ranges of mu_s and mu_k on top; the pairs where the two slides cannot both be right
 (rig.teaching.friction_table.contradictions: steel-PTFE) are marked in red.
+
+Run it from the repository root::
 
     python experiments/tutorial/step03_friction_table.py [-o out/tutorial]
 
@@ -97,5 +103,19 @@ def main(argv: list[str] | None = None) -> list[Path]:
     return write_step(fig, table, args.output, STEM)
 
 
+# %%
+# Run the step: it writes the figure and the numbers behind it (a CSV with units in the column
+# names) into its output folder, ``out/tutorial`` unless ``-o`` says otherwise.
+
 if __name__ == "__main__":
     print("wrote", *main())
+
+# %%
+# **What to look at.**
+# The red row: slide 18 gives steel-Teflon mu_s = 0.3-0.6 and mu_k = 0.1-0.2, the table 0.04 (dry and
+# lubricated). Both cannot hold: the quoted static range misses the table's value, and the quoted *kinetic*
+# coefficient would exceed the table's *static* one. For steel-steel the two slides agree (0.80 is the top of
+# 0.3-0.8). The top axis converts mu_s into the critical inclination of step 2.
+#
+# The questions that go with this step, and their answers, are on the tutorial page of the user guide.
+

@@ -1,9 +1,15 @@
-"""Tutorial step 4: a wheel pulled at its centre - rolling without slipping, then with slipping.
+"""
+Step 4: rolling without slipping, and when it stops
+===================================================
 
-[Zhao] slides 22-24 and 33-40: while |T| <= mu_s N (ineq. 5.10) the contact point is the
+A wheel pulled at its centre - rolling without slipping, then with slipping.
+
+[Zhao] slides 22-24 and 33-40: while abs(T) <= mu_s N (ineq. 5.10) the contact point is the
 instantaneous centre (v = omega r) and a = (F - f_v N)/(m + J/r^2), T = J a/r^2 + f_v N;
 beyond F_max the wheel slips, T = mu_k N and the centre outruns the rim (a > omega' r).
 A solid rubber-tyred disc on concrete: mu_s = 1.0 (slide 19, concrete-rubber dry).
+
+Run it from the repository root::
 
     python experiments/tutorial/step04_rolling_wheel.py [-o out/tutorial]
 
@@ -72,5 +78,18 @@ def main(argv: list[str] | None = None) -> list[Path]:
     return write_step(fig, table, args.output, STEM)
 
 
+# %%
+# Run the step: it writes the figure and the numbers behind it (a CSV with units in the column
+# names) into its output folder, ``out/tutorial`` unless ``-o`` says otherwise.
+
 if __name__ == "__main__":
     print("wrote", *main())
+
+# %%
+# **What to look at.**
+# Left: T grows with F (T = (F - f_v N)/3 + f_v N for a disc) until it reaches mu_s N at F_max = 3 mu_s N - 2
+# f_v N = 291 N, then drops to mu_k N. Right: below F_max the centre and the rim accelerate together (a = omega'
+# r); above it the centre outruns the rim - the wheel skids.
+#
+# The questions that go with this step, and their answers, are on the tutorial page of the user guide.
+

@@ -1,9 +1,15 @@
-"""Tutorial step 5: rolling resistance - the normal reaction shifted forward by u = f_v r.
+"""
+Step 5: rolling resistance: the shifted normal reaction
+=======================================================
+
+Rolling resistance - the normal reaction shifted forward by u = f_v r.
 
 [Zhao] slides 32-36: N acts a distance u ahead of the centre and resists with the moment
 N u; the power lost is N u omega = f_v N v; f_v is measured by pulling a wheel at constant
 speed (the pull then equals f_v N). The right panel simulates that measurement with a noisy
 force gauge (seeded) and recovers f_v with its standard uncertainty.
+
+Run it from the repository root::
 
     python experiments/tutorial/step05_rolling_resistance.py [-o out/tutorial]
 
@@ -94,5 +100,19 @@ def main(argv: list[str] | None = None) -> list[Path]:
     return write_step(fig, table, args.output, STEM)
 
 
+# %%
+# Run the step: it writes the figure and the numbers behind it (a CSV with units in the column
+# names) into its output folder, ``out/tutorial`` unless ``-o`` says otherwise.
+
 if __name__ == "__main__":
     print("wrote", *main())
+
+# %%
+# **What to look at.**
+# Left: the forces on the wheel (u exaggerated). Middle: the power lost by a wheel carrying 3 kN grows linearly
+# with speed; at the same load a tyre loses 2-20 times more than a steel wheel (the ratio of the f_v ranges).
+# Right: a simulated pull measurement (a force gauge with 8 N noise, seeded) gives f_v = F/N = 0.01500 +-
+# 0.00020 for a wheel built with 0.015.
+#
+# The questions that go with this step, and their answers, are on the tutorial page of the user guide.
+

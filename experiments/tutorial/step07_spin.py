@@ -1,12 +1,18 @@
-"""Tutorial step 7: spin - the contact also turns about its normal ([Koziarski] eqs. 1 and 7).
+"""
+Step 7: spin: slip that turns about the rolling point
+=====================================================
+
+Spin - the contact also turns about its normal ([Koziarski] eqs. 1 and 7).
 
 Two wheels whose axes are inclined to the contact plane spin relative to each other with
 w0 = w1 sin(alpha1) + w2 sin(alpha2) (eq. 1; axes on opposite sides, as on stand A). The rigid
 slip is then a rotation w0 about the rolling point C (eq. 7): zero at C, growing with the
 distance from it. In full sliding the friction opposes the slip everywhere and the contact
-carries a pivoting moment, nu_0 = 3 pi/16 for a Hertz circle with C at its centre (the Equations page
-1.10); an elastic contact (track deformability alpha', eq. 21) adheres near C, loses pivoting
+carries a pivoting moment, nu_0 = 3 pi/16 for a Hertz circle with C at its centre (Equations
+§1.10); an elastic contact (track deformability alpha', eq. 21) adheres near C, loses pivoting
 moment, and - the paper's theme - produces a lateral force F_y from spin alone.
+
+Run it from the repository root::
 
     python experiments/tutorial/step07_spin.py [-o out/tutorial] [--n 16]
 
@@ -99,5 +105,20 @@ def main(argv: list[str] | None = None) -> list[Path]:
     return write_step(fig, table, args.output, STEM)
 
 
+# %%
+# Run the step: it writes the figure and the numbers behind it (a CSV with units in the column
+# names) into its output folder, ``out/tutorial`` unless ``-o`` says otherwise.
+
 if __name__ == "__main__":
     print("wrote", *main())
+
+# %%
+# **What to look at.**
+# Left: stand A at l = 0 spins at w0 = 24.1 + 20.4 = 44.5 rad/s (Equations §3.1: 44 rad/s); the slip circles C.
+# Middle: at alpha' = 30 the tractions of the kinematic model (`rig.contact.solve`) and the adhesion zone, which
+# sits on the leading side (x < 0) where the material has not yet slipped. Right: for pure spin of a Hertz
+# circle nu_0 starts at 3 pi/16 and falls with alpha'; nu_v rises from 0, peaks near 0.58 at alpha' ~ 10 and
+# falls like 1/alpha'; the adhesion area appears above alpha' ~ 10 and covers the contact at large alpha'.
+#
+# The questions that go with this step, and their answers, are on the tutorial page of the user guide.
+

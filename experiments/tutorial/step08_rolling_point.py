@@ -1,11 +1,17 @@
-"""Tutorial step 8: the rolling point C moves - and the force components follow (eqs. 26-28).
+"""
+Step 8: moving the rolling point
+================================
+
+The rolling point C moves - and the force components follow (eqs. 26-28).
 
 Stand A's contact is a line contact with b/a = 1 at 96.2 N and alpha' ~ 0.64 (Equations §3.1:
 nearly full sliding). Moving C = (c, l) away from the centre turns the rigid slip (a rotation
 about C) into a nearly uniform slide: the peripheral force nu_T (C along the contact line, l),
 the lateral force nu_v (C across it, c) saturate at 1, the pivoting moment about C grows like
-|C|/a. Full sliding (rigid model) and the paper's kinematic model at stand A's alpha' and at a
+abs(C)/a. Full sliding (rigid model) and the paper's kinematic model at stand A's alpha' and at a
 stiffer alpha' = 10 are drawn.
+
+Run it from the repository root::
 
     python experiments/tutorial/step08_rolling_point.py [-o out/tutorial] [--n 16]
 
@@ -99,5 +105,20 @@ def main(argv: list[str] | None = None) -> list[Path]:
     return write_step(fig, table, args.output, STEM)
 
 
+# %%
+# Run the step: it writes the figure and the numbers behind it (a CSV with units in the column
+# names) into its output folder, ``out/tutorial`` unless ``-o`` says otherwise.
+
 if __name__ == "__main__":
     print("wrote", *main())
+
+# %%
+# **What to look at.**
+# Left two panels: rigid slip (black) and full-sliding traction (red) for C inside and outside the contact.
+# Right: full sliding (dashed) and the kinematic model at stand A's alpha' = 0.64 (solid) nearly coincide -
+# except nu_v at c = 0, which only the elastic model has; a stiffer contact (alpha' = 10, dotted, the range of
+# stand B) lowers nu_0 and raises nu_v. Checks (tested): full sliding gives nu_T = -0.446, nu_0 = 0.824 at l =
+# 0.5a and nu_v = 0.400, nu_0 = 0.793 at c = 0.4a, the values of Equations §1.10(a).
+#
+# The questions that go with this step, and their answers, are on the tutorial page of the user guide.
+

@@ -1,4 +1,8 @@
-"""Tutorial step 10: the paper's measurement method on stand A ([Koziarski] section 3.1.2, eqs. 29-35).
+"""
+Step 10: the measurement method
+===============================
+
+The paper's measurement method on stand A ([Koziarski] section 3.1.2, eqs. 29-35).
 
 Runs the stand-A scene (default: the built-in `default` scene, as `rig run` does): the brake
 moment T2 on wheel 2 moves the rolling point along the contact line; at each set-point the
@@ -6,6 +10,8 @@ counters give i_k, the dynamometer F_y, the tangent balance T2. The reduction tu
 l/a (eq. 30), alpha' (eq. 21), the model's nu_T, nu_v, nu_0 at that state (eqs. 26-28) and
 finally mu_v = F_y/(F_N nu_v) (eq. 33) and mu_T (eq. 35), each with its uncertainty - to be held
 against the mu = 0.4 the virtual stand was built with.
+
+Run it from the repository root::
 
     python experiments/tutorial/step10_measurement.py [-o out/tutorial] [--scene default]
 
@@ -89,5 +95,19 @@ def main(argv: list[str] | None = None) -> list[Path]:
     return write_step(fig, table[columns], args.output, STEM, index=True)
 
 
+# %%
+# Run the step: it writes the figure and the numbers behind it (a CSV with units in the column
+# names) into its output folder, ``out/tutorial`` unless ``-o`` says otherwise.
+
 if __name__ == "__main__":
     print("wrote", *main())
+
+# %%
+# **What to look at.**
+# Panel 1: what the instruments read - the brake moment changes the speed ratio (and F_y). Panel 2: the rolling
+# point from the counts follows the simulation's truth within its uncertainty over l/a = -1 ... 1. Panel 3: the
+# model coefficients at the measured states. Panel 4: mu_v and mu_T agree with the mu = 0.4 the stand was built
+# with.
+#
+# The questions that go with this step, and their answers, are on the tutorial page of the user guide.
+

@@ -7,8 +7,8 @@ b/a, Poisson ratio, grid n and effects on a uniform grid of nodes in l/a, c/a an
 not-a-knot cubic spline (rig.contact.tensor_spline): C2, fourth order, exact at the nodes, with
 analytic first derivatives for the Jacobian of an implicit integrator.
 
-Why a cubic spline and not a monotone cubic (PCHIP): nu_v has a maximum in alpha' (the Equations page
-1.10 c), and PCHIP flattens every extremum of the data to a zero slope, which costs accuracy
+Why a cubic spline and not a monotone cubic (PCHIP): nu_v has a maximum in alpha' (Equations
+§1.10(c)), and PCHIP flattens every extremum of the data to a zero slope, which costs accuracy
 exactly there; PCHIP is also only C1 and third order. The laws are smooth and saturating
 (|nu| < 1), and on the tables we use the spline's overshoot stays below the measured
 interpolation error (docs/stands-contact.md, "Surrogate tables").

@@ -11,9 +11,11 @@ import pandas as pd
 DEFAULT_OUTPUT = Path("out/tutorial")
 
 
-def argument_parser(doc: str) -> argparse.ArgumentParser:
-    """A parser whose description is the script's first docstring line, with -o/--output [folder]."""
-    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+def argument_parser(doc: str | None) -> argparse.ArgumentParser:
+    """A parser whose description is the script's title (its docstring's first non-empty line), with
+    -o/--output [folder]. ``doc`` may be empty or None (the documentation gallery runs the scripts without it)."""
+    lines = [line.strip() for line in (doc or "").splitlines() if line.strip()]
+    parser = argparse.ArgumentParser(description=lines[0] if lines else None)
     parser.add_argument("-o", "--output", type=Path, default=DEFAULT_OUTPUT, help="output folder")
     return parser
 

@@ -1,8 +1,8 @@
 """``rig run``, ``rig scenes``, ``rig reduce`` through rig.cli.main, and ``python -m rig`` once.
 
 Scenes come from a temporary RIG_SCENES_DIR: the fake stand's scene and a tiny characteristics
-scene (rigid model: nu_0 of pure spin of a Hertz circle in full sliding is 3 pi / 16, the Equations page
-1.10(a), whatever alpha'; the grid of n = 64 cells gets within 6e-4 of it).
+scene (rigid model: nu_0 of pure spin of a Hertz circle in full sliding is 3 pi / 16, Equations
+§1.10(a), whatever alpha'; the grid of n = 64 cells gets within 6e-4 of it).
 """
 
 from __future__ import annotations

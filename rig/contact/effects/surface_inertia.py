@@ -1,7 +1,7 @@
 """Surface inertia forces of the deformed surface layer, eq. (15) of [Koziarski] (model choice).
 
-The paper writes dF_b = rho d2u/dt2 dx dy dz but gives no model of the layer. The Equations page
-(1.9 step 3) suggest a layer of fixed mass rho h_l per area; that model is ill-posed: its
+The paper writes dF_b = rho d2u/dt2 dx dy dz but gives no model of the layer. Equations §1.9
+(step 3) suggests a layer of fixed mass rho h_l per area; that model is ill-posed: its
 correction grows like Gamma |k| with the wavenumber, so on a fine grid it resonates at the cell
 scale and the result depends on the cell size (docs/contact-model.md shows it). Chosen instead:
 a surface wave of wavenumber k moves the material down to a depth ~1/|k|, so the mass per area
