@@ -14,8 +14,19 @@ from paramcheck.errors import ConvergenceError, NamedError, ParameterError, Unkn
 
 RigError = NamedError
 
-__all__ = ["ConvergenceError", "LogFormatError", "ParameterError", "RigError", "UnknownNameError"]
+__all__ = ["ConvergenceError", "LogFormatError", "MissingExtraError", "ParameterError", "RigError",
+           "UnknownNameError"]
 
 
 class LogFormatError(RigError, ValueError):
     """A measurement log is damaged or not one of ours: names the file and what is wrong."""
+
+
+class MissingExtraError(RigError, ImportError):
+    """A feature needs an optional dependency that is not installed: names the feature and the pip extra."""
+
+    def __init__(self, feature: str, package: str, extra: str) -> None:
+        self.feature = feature
+        self.package = package
+        self.extra = extra
+        super().__init__(f'{feature} needs {package}, which is not installed: pip install "friction-rig[{extra}]"')

@@ -19,17 +19,33 @@ from rig.errors import RigError
 EXIT_INTERRUPTED = 130
 """Exit status after Ctrl-C (128 + SIGINT, as shells report it)."""
 
-SUBCOMMANDS = ("run", "scenes", "reduce", "compare", "accuracy", "lab", "fit")
+SUBCOMMAND_HELP = {
+    "run": "run a scene (built-in name or file; default: the stand-A quick scene)",
+    "scenes": "list the built-in scenes, one line each",
+    "reduce": "reduce a log.h5 again (reduced.csv, /reduced in the log)",
+    "compare": "compare a simulated RESULT CSV with a digitised figure (WebPlotDigitizer export)",
+    "accuracy": "what accuracy costs for a stand scene: error vs CPU time per setting, Pareto plot",
+    "lab": "the virtual lab: operate the stands from a web page",
+    "fit": "estimate mu and contact effects from a log, a reduced.csv or a digitised curve",
+}
+"""The one-line help of each subcommand as ``rig --help`` lists it, without importing the subcommand
+modules (their imports - numpy, pandas, the stands - would cost ~2 s of CPU at every start). Each
+module's ``add_parser`` passes the same text (tests/cli/test_startup.py checks it)."""
+
+SUBCOMMANDS = tuple(SUBCOMMAND_HELP)
 
 
 def build_parser(only: str | None = None) -> argparse.ArgumentParser:
-    """The parser with every subcommand, or with ``only`` that one (the others' imports - the lab's
-    web server, the fit engine - cost ~0.4 s that a ``rig run`` of a large study need not pay)."""
+    """The parser with ``only`` that subcommand (its module imported), or, for ``only=None``, a parser that
+    lists every subcommand by its one-line help and imports none (``rig --help``, ``rig --version``)."""
     parser = argparse.ArgumentParser(prog="rig", description="friction-rig: virtual friction-wheel test rig")
     parser.add_argument("--version", action="version", version=f"friction-rig {__version__}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
-    for name in SUBCOMMANDS if only is None else (only,):
-        importlib.import_module(f"rig.cli.{name}").add_parser(subparsers)
+    if only is not None:
+        importlib.import_module(f"rig.cli.{only}").add_parser(subparsers)
+        return parser
+    for name, text in SUBCOMMAND_HELP.items():
+        subparsers.add_parser(name, help=text, add_help=False)  # never dispatched: main() imports a named one
     return parser
 
 

@@ -12,7 +12,7 @@ import threading
 import webbrowser
 from pathlib import Path
 
-from rig.errors import ParameterError
+from rig.errors import MissingExtraError, ParameterError
 
 DEFAULT_PORT = 8765
 
@@ -35,11 +35,20 @@ def add_parser(subparsers) -> None:
     parser.set_defaults(handler=main)
 
 
-def main(args) -> int:
-    from werkzeug.serving import make_server  # the server's libraries load only for ``rig lab``
+LAB_PACKAGES = ("flask", "werkzeug")
+"""The web server's libraries, installed by the extra ``lab`` (``pip install "friction-rig[lab]"``)."""
 
+
+def main(args) -> int:
+    try:  # the server's libraries load only for ``rig lab``; they come with the extra "lab"
+        from werkzeug.serving import make_server
+
+        from rig.lab.app import Lab, create_app
+    except ModuleNotFoundError as error:
+        if (error.name or "").partition(".")[0] not in LAB_PACKAGES:
+            raise
+        raise MissingExtraError("rig lab", "Flask", "lab") from None
     from rig import validate
-    from rig.lab.app import Lab, create_app
     from rig.lab.exercises import ClassFile
 
     logging.getLogger("werkzeug").setLevel(logging.WARNING)  # no line per request on the console

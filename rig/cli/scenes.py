@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from rig.scenes import builtin_scenes
+from rig.scenes.locate import builtin_scenes
 
 
 def add_parser(subparsers) -> None:

@@ -66,6 +66,15 @@ def setting_label(key: str) -> str:
 def reduced_vs_truth_figure(table: pd.DataFrame, plan: Sequence[PlannedPoint], procedure: Procedure, path: Path,
                             title: str) -> Path | None:
     """Draw the figure into ``path`` (PNG); None when the table has none of the quantities."""
+    fig = draw_reduced_vs_truth(table, plan, procedure, title)
+    if fig is None:
+        return None
+    fig.savefig(path, dpi=110)
+    return path
+
+
+def draw_reduced_vs_truth(table: pd.DataFrame, plan: Sequence[PlannedPoint], procedure: Procedure, title: str):
+    """The figure as a matplotlib Figure (not saved, no pyplot); None when the table has none of the quantities."""
     names = [n for n in QUANTITIES if n in table.columns]
     if not names or table.empty:
         return None
@@ -95,5 +104,4 @@ def reduced_vs_truth_figure(table: pd.DataFrame, plan: Sequence[PlannedPoint], p
     axes.flat[0].legend(fontsize=7)
     fig.suptitle(title, fontsize=10)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    return path
+    return fig

@@ -7,31 +7,35 @@ settle timeout, gate time, repeats), the seed and the outputs - or, with ``kind 
 unknown keys and names raise rig.errors.UnknownNameError with a suggestion, out-of-range values
 raise rig.errors.ParameterError naming the key and its range, and missing physical input is an
 error. Built-in scenes ship with the package, in ``rig/scenes/builtin/`` (rig.scenes.locate).
+
+The names below are imported from their modules on first use (PEP 562), so that listing the
+built-in scenes (``rig scenes``) does not import the stands and the contact model.
 """
 
 from __future__ import annotations
 
-from rig.scenes.characteristics_scene import CharacteristicsScene
-from rig.scenes.load import Scene, SceneKind, load_scene, parse_scene
-from rig.scenes.locate import BuiltinScene, builtin_scenes, resolve_scene, scenes_dir
-from rig.scenes.oscillation_scene import OscillationScene
-from rig.scenes.procedure import PlannedPoint, Procedure, TimeoutPolicy
-from rig.scenes.stand_scene import Outputs, StandScene
+import importlib
 
-__all__ = [
-    "BuiltinScene",
-    "CharacteristicsScene",
-    "OscillationScene",
-    "Outputs",
-    "PlannedPoint",
-    "Procedure",
-    "Scene",
-    "SceneKind",
-    "StandScene",
-    "TimeoutPolicy",
-    "builtin_scenes",
-    "load_scene",
-    "parse_scene",
-    "resolve_scene",
-    "scenes_dir",
-]
+_HOMES = {
+    "BuiltinScene": "locate", "builtin_scenes": "locate", "resolve_scene": "locate", "scenes_dir": "locate",
+    "CharacteristicsScene": "characteristics_scene",
+    "OscillationScene": "oscillation_scene",
+    "PlannedPoint": "procedure", "Procedure": "procedure", "TimeoutPolicy": "procedure",
+    "Outputs": "stand_scene", "StandScene": "stand_scene",
+    "Scene": "load", "SceneKind": "load", "load_scene": "load", "parse_scene": "load",
+}
+
+__all__ = sorted(_HOMES)
+
+
+def __getattr__(name: str):
+    """PEP 562: each exported name is imported from its module when first used."""
+    if name not in _HOMES:
+        raise AttributeError(f"module 'rig.scenes' has no attribute {name!r}")
+    value = getattr(importlib.import_module(f"rig.scenes.{_HOMES[name]}"), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_HOMES))

@@ -1,7 +1,7 @@
-"""Where `rig fit`'s mu goes on stand-A recovery runs (issue 10, acceptance 1): the error chain taken apart.
+"""Where `rig fit`'s mu goes on stand-A recovery runs: the error chain taken apart.
 
-    python experiments/fit_bias_diagnosis.py --psi 1.6 RUN_DIR [RUN_DIR ...]
-    python experiments/fit_bias_diagnosis.py --calibrations 1000
+    python studies/fit_bias_diagnosis.py --psi 1.6 RUN_DIR [RUN_DIR ...]
+    python studies/fit_bias_diagnosis.py --calibrations 1000
 
 RUN_DIR: runs kept by ``experiments/fit_recovery.py --keep DIR`` (truth mu = 0.35, Psi as given).
 Per run, (mu, Psi) and mu alone (Psi at the truth) are fitted as ``rig fit`` does (engine.fit,

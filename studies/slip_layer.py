@@ -1,14 +1,13 @@
 """The slip layer between the circle's stick zone and its trailing edge: where its share of nu_v's
 error sits, what in the slip cells' equations makes it, and what changes it
-(docs/contact-convergence.md, "Fifth pass: the slip layer").
+(docs/contact-convergence.md, the slip layer).
 
-    python experiments/slip_layer.py map [--n 32] [--fine 256] [--variant V]   (n > 64 or --gmres: GMRES per part)
-    python experiments/slip_layer.py nu [--grids 16 32 64 128] [--shifts 1] [--variant V] [--b 1] [--alpha 20.5]
-    (BDF3_ROOM=K in the environment: active cells upstream a cell needs for the bdf3 variants, default 3)
+    python studies/slip_layer.py map [--n 32] [--fine 256]   (n > 64 or --gmres: GMRES per part)
+    python studies/slip_layer.py nu [--grids 16 32 64 128] [--shifts 1] [--b 1] [--alpha 20.5]
 
 Pure spin about the centre, Poisson 0.28; the circle at alpha' = 20.5 has the limit nu_v = 0.452144.
-map (the circle): the adjoint split of experiments/contact_attribution.py (the reference: the same
-variant on --fine cells) by region, then the slip cells downstream (x > 0) by physical distance to the
+map (the circle): the adjoint split of studies/contact_attribution.py (the reference: the same
+law on --fine cells) by region, then the slip cells downstream (x > 0) by physical distance to the
 row's trailing edge x_T(y) (bands fixed in units of a: the +-2-cell classes of contact_attribution.py
 hand cells from one class to the next as h falls, so their orders mislead), by distance to the stick
 zone and by cells to the row's end; each band split into the residual's radial part and its direction
@@ -25,26 +24,15 @@ the slip's direction turns fast (on the axis the slip has a sqrt(x_T - x) term).
 stick zone's (0.97/0.94). No local change to the rim or the last cells removes the layer's share;
 third-order differences flip its sign instead.
 
-Variants (changes to the discrete law, monkeypatched here; rig/ is not edited; run from a copy of the
-tree with the prototype's rig/contact/entry.py and cellwise.py, 9f2f2bd, to apply them to it):
-  base          the law as rig/ has it;
-  centroid      a row's last cell takes its rigid slip at the x-centroid of its load (its Voronoi share
-                of the contact beyond the centre) instead of at its centre;
-  centroidfull  the same, and its elastic slip moved there with the second difference of U;
-  twopoint      the first two slip cells after a row's stick zone take the two-point difference
-                (U_c - U_c-1)/h at x_c - h/2 (the BDF2 stencil there reaches into stick cells);
-                the stick map is taken from the base solution and iterated to a fixed point;
-  rimload       the contact in a rim cell goes to the nearest active cell of its own row, not to the
-                nearest centre (which may be in the next row); rimtrail / rimlead: on one side only;
-  trailing      a row's last TRAILING_CELLS cells: a 4-point stencil exact for (x_T - x)^1.5 as well;
-  bdf3          cells with BDF3_ROOM active cells upstream: the third-order backward difference;
-  bdf3slip      the same in the slip cells only (stick map iterated as in twopoint).
+The variants of the discrete law that were tried against this layer (a row's last cell at its load's
+centroid, a two-point difference after the stick zone, rim loads kept in their row, a trailing-edge
+stencil, third-order backward differences) needed changes inside rig.contact and are not kept here;
+docs/contact-convergence.md reports what each did. This script runs the law as rig.contact has it.
 """
 
 from __future__ import annotations
 
 import argparse
-import os
 import sys
 from pathlib import Path
 
@@ -53,7 +41,6 @@ from scipy import ndimage
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-import rig.contact.entry as entry  # noqa: E402
 import rig.contact.grid as gridmod  # noqa: E402
 from rig.contact.effects import ContactEffects  # noqa: E402
 from rig.contact.influence import influence_operator  # noqa: E402
@@ -69,168 +56,17 @@ LIMIT = 0.452144
 B_OVER_A = 1.0
 CREEPAGE = Creepage.from_rolling_point(ALPHA, 0.0, 0.0, POISSON)  # main() sets both from --b, --alpha
 EFFECTS = ContactEffects()
-_base_weights = entry.transport_weights
-_base_pressure = gridmod._cell_pressure
-STICK_MAPS: dict = {}  # key(grid) -> (N,) stick map of the iterated variants (twopoint, bdf3slip)
-TRAILING_CELLS = 3
-BDF3_ROOM = int(os.environ.get("BDF3_ROOM", "3"))  # active cells upstream a cell needs for bdf3
 
 
-def key(grid) -> tuple:
-    """A grid's identity for STICK_MAPS (make_grid's cache is cleared between variants)."""
-    return grid.shape, grid.b_over_a, grid.n, float(grid.x[0])
+def solve(grid):
+    """The kinematic solution on a grid (rig.contact.models.kinematic as it is)."""
+    return kinematic.solve_grid(grid, POISSON, CREEPAGE, EFFECTS)
 
 
-def last_cells(grid) -> np.ndarray:
-    """(N,) True for each row's last active cell."""
-    return ~grid.active.ravel()[grid.index + grid.ny]
-
-
-def centroid_weights(grid, full=False):
-    """Transport of main; a row's last cell's rigid slip at its load's x-centroid (full: its elastic
-    slip too, moved there with the second difference of U)."""
-    weights, x_slip = _base_weights(grid)
-    x, y = grid.centres()
-    last = last_cells(grid)
-    h, b = grid.hx, grid.b_over_a
-    # load of the last cell: its own cell plus the contact behind it up to x_T (row strip), p ~ sqrt
-    s = (np.arange(64) + 0.5) / 64
-    for c in np.flatnonzero(last):
-        x_t = b * np.sqrt(max(1.0 - y[c] ** 2, 0.0))
-        lo = x[c] - 0.5 * h
-        xs = lo + (x_t - lo) * s
-        p = gridmod.pressure(grid.shape, b, xs, np.full_like(xs, y[c]))
-        if p.sum() > 0:
-            shift = float((xs * p).sum() / p.sum()) - x[c]
-            x_slip[c] += shift
-            if full:
-                weights[:, c] += shift / h**2 * np.array([1.0, -2.0, 1.0])
-    return weights, x_slip
-
-
-def trailing_weights(grid, cells=TRAILING_CELLS):
-    """Transport of main with a fourth weight (k = 3); a row's last ``cells`` cells take dU/dx from the
-    4-point stencil (c, c-1, c-2, c-3) exact for 1, x, x^2 and (x_T - x)^1.5 (the trailing edge's sqrt
-    slip; x_T(y) the trailing edge of the row), instead of BDF2."""
-    weights, x_slip = _base_weights(grid)
-    weights = np.vstack([weights, np.zeros((1, weights.shape[1]))])
-    x, y = grid.centres()
-    h = grid.hx
-    before = grid.gather((np.cumsum(grid.active[::-1], axis=0)[::-1] - 1)[None])[0]
-    room = grid.gather((np.cumsum(grid.active, axis=0) - 1)[None])[0]  # active cells upstream
-    k = np.arange(4) * h
-    for c in np.flatnonzero((before < cells) & (room >= 3)):
-        x_t = grid.b_over_a * np.sqrt(max(1.0 - y[c] ** 2, 0.0))
-        d = x_t - (x[c] - k)
-        if d[0] <= 0.0:
-            continue
-        a = np.stack([np.ones(4), -k, k**2, d**1.5])
-        rhs = np.array([0.0, 1.0, 0.0, -1.5 * np.sqrt(d[0])])
-        weights[:, c] = np.linalg.solve(a, rhs)
-    return weights, x_slip
-
-
-def bdf3_weights(grid, slip_only=False):
-    """Transport of main with a fourth weight (k = 3); cells with BDF3_ROOM (>= 3) active cells upstream
-    take the third-order backward difference (11 U_c - 18 U_c-1 + 9 U_c-2 - 2 U_c-3)/(6 h), all of them
-    or (slip_only) the slip cells of the stick map in STICK_MAPS."""
-    weights, x_slip = _base_weights(grid)
-    weights = np.vstack([weights, np.zeros((1, weights.shape[1]))])
-    room = grid.gather((np.cumsum(grid.active, axis=0) - 1)[None])[0]
-    chosen = room >= BDF3_ROOM
-    if slip_only:
-        stick = STICK_MAPS.get(key(grid))
-        chosen &= np.zeros_like(chosen) if stick is None else ~stick
-    weights[:, chosen] = np.array([11.0, -18.0, 9.0, -2.0])[:, None] / (6.0 * grid.hx)
-    return weights, x_slip
-
-
-def twopoint_weights(grid):
-    """Transport of main; the first two slip cells after a row's stick zone: two-point difference."""
-    weights, x_slip = _base_weights(grid)
-    stick = STICK_MAPS.get(key(grid))
-    if stick is None:
-        return weights, x_slip
-    full = grid.scatter(stick.astype(float)[None, :])[0] > 0.5
-    up1 = np.roll(full, 1, axis=0)
-    up2 = np.roll(full, 2, axis=0)
-    first_slip = grid.gather((~full & up1 & grid.active)[None])[0]
-    second_slip = grid.gather((~full & ~up1 & up2 & grid.active)[None])[0]
-    chosen = (first_slip | second_slip) & ~entry.entering(grid)
-    weights[:, chosen] = np.array([1.0, -1.0, 0.0])[:, None] / grid.hx
-    x_slip[chosen] -= 0.5 * grid.hx
-    return weights, x_slip
-
-
-def rimload_pressure(shape, b, x, y, hx, hy, active, side=0):
-    """As main, but the contact in a rim cell goes to the nearest active cell of its own row (not to the
-    nearest centre, which may be in the next row); side > 0: only on the trailing side (x > 0), < 0:
-    only on the leading side."""
-    p = _base_pressure(shape, b, x, y, hx, hy, active)
-    if side:
-        keep = p.copy()
-    interior = np.logical_and.reduce([gridmod.pressure(shape, b, x[:, None] + sx * hx / 2, y[None, :] + sy * hy / 2)
-                                      > gridmod._INSIDE for sx in (-1, 1) for sy in (-1, 1)])
-    m = 64
-    s = (np.arange(m) + 0.5) / m - 0.5
-    out = np.where(interior, p, 0.0)
-    for j in range(y.size):
-        cols = np.flatnonzero(active[:, j])
-        if cols.size == 0:
-            continue
-        ys = y[j] + hy * s
-        for i in range(x.size):
-            if interior[i, j]:
-                continue
-            xs = x[i] + hx * s
-            load = gridmod.pressure(shape, b, xs[:, None], ys[None, :]).mean()
-            if load == 0.0:
-                continue
-            target = i if active[i, j] else cols[np.argmin(np.abs(cols - i))]
-            out[target, j] += load
-    if side:  # main's loads on the other side; the Voronoi shares that crossed x = 0 are none (rim cells only)
-        other = (x[:, None] > 0) != (side > 0)
-        out = np.where(other, keep, out)
-    return out
-
-
-def use(variant: str) -> None:
-    weights = {"centroid": centroid_weights, "twopoint": twopoint_weights, "trailing": trailing_weights,
-               "bdf3": bdf3_weights, "bdf3slip": lambda grid: bdf3_weights(grid, slip_only=True),
-               "centroidfull": lambda grid: centroid_weights(grid, full=True)}.get(variant, _base_weights)
-    kinematic.transport_weights = weights
-    # the first cells' local correction (rig.contact.entry) takes three weights: a cell it reaches that
-    # has a fourth (bdf3 with BDF3_ROOM <= 6 under the prototype) loses that one there
-    entry.transport_weights = lambda grid: (lambda w, xs: (w[:3], xs))(*weights(grid))
-    entry.entry_profile.cache_clear()
-    pressures = {"rimload": rimload_pressure,
-                 "rimtrail": lambda *a: rimload_pressure(*a, side=1), "rimlead": lambda *a: rimload_pressure(*a, side=-1)}
-    gridmod._cell_pressure = pressures.get(variant, _base_pressure)
-    gridmod.make_grid.cache_clear()
-
-
-def solve(grid, variant: str):
-    """The kinematic solution on a grid; twopoint and bdf3slip iterate their stick map to a fixed point."""
-    iterated = variant in ("twopoint", "bdf3slip")
-    use("base" if iterated else variant)
-    solution = kinematic.solve_grid(grid, POISSON, CREEPAGE, EFFECTS)
-    if not iterated:
-        return solution
-    use(variant)
-    for _ in range(10):
-        STICK_MAPS[key(grid)] = solution.stick
-        entry.entry_profile.cache_clear()
-        solution = kinematic.solve_grid(grid, POISSON, CREEPAGE, EFFECTS)
-        if np.array_equal(solution.stick, STICK_MAPS[key(grid)]):
-            break
-    return solution
-
-
-def values(n: int, shift: float, variant: str) -> tuple[float, float]:
+def values(n: int, shift: float) -> tuple[float, float]:
     """(nu_v, nu_0) on the grid of size n moved by ``shift`` cells."""
-    use(variant)
     grid = gridmod.make_grid("ellipse", B_OVER_A, n, shift)
-    solution = solve(grid, variant)
+    solution = solve(grid)
     x, y = grid.centres()
     result = coefficients(x, y, solution.q, grid.gather(grid.p), CREEPAGE)
     return float(result["nu_v"]), float(result["nu_0"])
@@ -240,25 +76,23 @@ def sequence(args) -> None:
     shifts = [-0.5 + k / args.shifts for k in range(args.shifts)] if args.shifts > 1 else [0.0]
     rows = []
     for n in args.grids:
-        v, v0 = np.mean([values(n, s, args.variant) for s in shifts], axis=0)
+        v, v0 = np.mean([values(n, s) for s in shifts], axis=0)
         rows.append(v)
         error = f" error {v - LIMIT:+.3e}" if (B_OVER_A, ALPHA) == (1.0, 20.5) else ""
-        print(f"{args.variant:9s} b/a {B_OVER_A:g} alpha' {ALPHA:g} n {n:4d} shifts {len(shifts)}: nu_v {v:.7f}{error}"
+        print(f"b/a {B_OVER_A:g} alpha' {ALPHA:g} n {n:4d} shifts {len(shifts)}: nu_v {v:.7f}{error}"
               f" nu_0 {v0:.7f}", flush=True)
     d = np.diff(rows)
     orders = [np.log2(d[k] / d[k + 1]) if d[k] * d[k + 1] > 0 else np.nan for k in range(d.size - 1)]
     if orders:
-        print(f"{args.variant:9s} nu_v orders from differences: " + " ".join(f"{o:.2f}" for o in orders))
+        print(f"nu_v orders from differences: " + " ".join(f"{o:.2f}" for o in orders))
 
 
 def attribution(args) -> None:
-    use(args.variant)
     grid = gridmod.make_grid("ellipse", B_OVER_A, args.n)
-    solution = solve(grid, args.variant)
+    solution = solve(grid)
     fine = gridmod.make_grid("ellipse", B_OVER_A, args.fine)
-    fine_solution = solve(fine, args.variant)  # the reference: the same variant on the fine grid
+    fine_solution = solve(fine)  # the reference: the same law on the fine grid
     q_fine = fine_solution.q
-    use(args.variant)
     t_ref = reference_on(grid, fine, q_fine)
     load = grid.gather(grid.p).sum()
     disc = kinematic.Discretisation(grid, influence_operator(grid, POISSON), EFFECTS)
@@ -280,14 +114,13 @@ def attribution(args) -> None:
             return -float(d.reshape(2, -1)[1].sum() / load)
         estimate = share_of(r_ref)
     nu, nu_ref = solution.q[1].sum() / load, t_ref[1].sum() / load
-    print(f"{args.variant}: nu_v(n = {args.n}) {nu:.6f}, fine (n = {args.fine}) {nu_ref:.6f}: difference "
+    print(f"nu_v(n = {args.n}) {nu:.6f}, fine (n = {args.fine}) {nu_ref:.6f}: difference "
           f"{nu - nu_ref:+.3e}, adjoint {estimate:+.3e}")
 
-    truth = None
-    if args.variant == "base":  # the fine solution's slip and displacement, for the truncation's split
-        fine_law = kinematic.Discretisation(fine, influence_operator(fine, POISSON), EFFECTS).law
-        truth = (fine.scatter(fine_solution.s), fine_law.displacement(q_fine), disc.law.displacement(t_ref),
-                 disc.weights)
+    # the fine solution's slip and displacement, for the truncation's split
+    fine_law = kinematic.Discretisation(fine, influence_operator(fine, POISSON), EFFECTS).law
+    truth = (fine.scatter(fine_solution.s), fine_law.displacement(q_fine), disc.law.displacement(t_ref),
+             disc.weights)
     s_ref = disc.rigid_slip(CREEPAGE) + disc.law.apply(t_ref)[1]  # the coarse slip at t*
     report(grid, solution, share_of, r_ref, t_ref, s_ref, fine, truth)
 
@@ -385,7 +218,6 @@ def main() -> None:
     parser.add_argument("--grids", type=int, nargs="+", default=[16, 32, 64, 128])
     parser.add_argument("--shifts", type=int, default=1)
     parser.add_argument("--gmres", action="store_true", help="map: GMRES per part also for n <= 64")
-    parser.add_argument("--variant", default="base", choices=("base", "centroid", "centroidfull", "twopoint", "rimload", "rimtrail", "rimlead", "trailing", "bdf3", "bdf3slip"))
     args = parser.parse_args()
     global B_OVER_A, ALPHA, CREEPAGE
     B_OVER_A, ALPHA = args.b, args.alpha

@@ -10,8 +10,8 @@ second-order upwind difference of the displacement, the leading edge's two sub-c
 (rig.contact.entry), the Coulomb law per cell by semi-smooth Newton - and measures the force error
 against the closed form (docs/contact-convergence.md, "Where the rest of the error is"):
 
-    python experiments/carter_boundary.py orders [--w 0.5] [--profiled K] [--tilted] [--hertz] [--grids 16 32 ...]
-    python experiments/carter_boundary.py where [--w 0.5] [--profiled K] [--grids 64 128 ...]
+    python studies/carter_boundary.py orders [--w 0.5] [--profiled K] [--tilted] [--hertz] [--grids 16 32 ...]
+    python studies/carter_boundary.py where [--w 0.5] [--profiled K] [--grids 64 128 ...]
 
 orders: nu on each grid as the mean over eight sub-cell shifts of the cells, its error, the observed
 order of successive doublings, the largest error and the spread over the shifts. where: the error

@@ -1,17 +1,16 @@
 """Where the kinematic model's discretisation error comes from: the grid studies of
 docs/contact-convergence.md, one state at a time.
 
-    python experiments/contact_convergence.py sequence B ALPHA C L [--grids 16 24 32 48 64 128] [--shape line]
-    python experiments/contact_convergence.py shift SHAPE B ALPHA C L [--n 32]
-    python experiments/contact_convergence.py refine B ALPHA C L [--nx 64] [--ny 32] [--shape line]
+    python studies/contact_convergence.py sequence B ALPHA C L [--grids 16 24 32 48 64 128] [--shape line]
+    python studies/contact_convergence.py shift SHAPE B ALPHA C L [--n 32]
 
 B = b/a, ALPHA = alpha', (C, L) = rolling point (c/a, l/a); Poisson's ratio 0.28.
 sequence: nu_v, nu_0 on a sequence of grids, with the observed orders of successive doublings.
 shift: the cells moved along x by -1/2 ... 1/4 of a cell at one n: an answer that depends on where
 the rim cuts the rows carries a first-order error.
-refine: cells along x (rolling) and along y refined separately, the other count held (nx cells
-across 2b, ny across 2a): which direction's resolution carries the error. Grids with a free nx are
-built by replacing rig.contact.grid.cells_along_rolling for the run.
+The study that refined the cells along x (rolling) and along y separately needed grids that
+rig.contact.grid does not build (a free number of cells along the rolling direction) and is not
+kept here; docs/contact-convergence.md reports what it found.
 """
 
 from __future__ import annotations
@@ -59,28 +58,10 @@ def shift(args) -> None:
     print(f"spread: nu_v {spread[0]:.6f}, nu_0 {spread[1]:.6f}")
 
 
-def refine(args) -> None:
-    along_rolling = grid_module.cells_along_rolling
-    factors = (0.5, 1, 2, 4)
-    studies = (("y refined", [(args.nx, int(f * args.ny)) for f in factors]),
-               ("x refined", [(int(f * args.nx), args.ny) for f in factors]))
-    try:
-        for label, pairs in studies:
-            for nx, ny in pairs:
-                grid_module.cells_along_rolling = lambda n, b, ratio=nx / ny: int(round(ratio * n))
-                grid_module.make_grid.cache_clear()
-                v, o, newton, krylov = _nu(args.b, args.alpha, args.c, args.l, ny, args.shape)
-                print(f"{label}: nx {nx:4d} ny {ny:4d}: nu_v {v:.6f} nu_0 {o:.6f}   "
-                      f"({newton} Newton, {krylov} products)")
-    finally:
-        grid_module.cells_along_rolling = along_rolling
-        grid_module.make_grid.cache_clear()
-
-
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     sub = parser.add_subparsers(dest="study", required=True)
-    for name in ("sequence", "shift", "refine"):
+    for name in ("sequence", "shift"):
         p = sub.add_parser(name)
         if name == "shift":
             p.add_argument("shape", choices=grid_module.SHAPES)
@@ -90,13 +71,10 @@ def main() -> int:
             p.add_argument(field, type=float)
         if name == "sequence":
             p.add_argument("--grids", type=int, nargs="+", default=[16, 24, 32, 48, 64, 128])
-        elif name == "shift":
-            p.add_argument("--n", type=int, default=32)
         else:
-            p.add_argument("--nx", type=int, default=64)
-            p.add_argument("--ny", type=int, default=32)
+            p.add_argument("--n", type=int, default=32)
     args = parser.parse_args()
-    {"sequence": sequence, "shift": shift, "refine": refine}[args.study](args)
+    {"sequence": sequence, "shift": shift}[args.study](args)
     return 0
 
 

@@ -1,6 +1,6 @@
 """Which cells' equations make the kinematic model's error at one state: an adjoint attribution.
 
-    python experiments/contact_attribution.py [--n 32] [--fine 256] [--b 1] [--alpha 20.5] [--map]
+    python studies/contact_attribution.py [--n 32] [--fine 256] [--b 1] [--alpha 20.5] [--map]
 
 Pure spin about the centre. The solution on a fine grid (nf = 8 n cells across 2a: its error is
 4-14x smaller), summed over the coarse cells (rim cells that are outside the coarse contact give
@@ -18,7 +18,7 @@ two cells (the leading edge's near field: the stick zone starts at the leading e
 rest of the slip zone. The finer classes near the leading edge are not reported: their residuals
 there are O(h^0.5) and their shares large and of both signs (docs/contact-convergence.md, "Where the rest
 of the error is"). The +-2-cell classes hand cells from one class to the next as h falls, so orders
-taken from them mislead; experiments/slip_layer.py splits by physical place (the fifth pass).
+taken from them mislead; studies/slip_layer.py splits by physical place (the fifth pass).
 """
 
 from __future__ import annotations
