@@ -1,7 +1,7 @@
 """Old-layout logs are reduced unchanged; a damaged point is NaN with its reason, the others as before.
 
 Data: tests/logbook/data/old_layout_v1.h5, a 4-point stand-A log written by the code before
-format version 2 (commit aafa9bc) from old_layout_v1.toml, and its reduced.csv as the current
+format version 2 from old_layout_v1.toml, and its reduced.csv as the current
 reduction gives it (regenerate with ``rig reduce`` on a copy of the log when the contact law
 changes: FASTSIM's three flexibilities moved its values by <= 2e-5, its spin-moment flexibility L4 by <= 4e-4,
 the kinematic model's rim loads and leading-edge cells (discretisation revision 7) mu_v by <= 2e-4 relative;
