@@ -13,7 +13,7 @@ from pathlib import Path
 
 # The scripts of experiments/ that are gallery examples (file stems; regular expressions). Everything else in
 # experiments/ (development studies) is left out of the gallery.
-GALLERY_SCRIPTS = (r"first_virtual_experiment", r"compare_and_fit", r"step\d\d_[a-z0-9_]+")
+GALLERY_SCRIPTS = (r"first_virtual_experiment", r"compare_and_fit", r"gate_time", r"step\d\d_[a-z0-9_]+")
 
 
 class TutorialOutputs:

@@ -1,5 +1,11 @@
-"""What accuracy costs in the lab: one stand-A operating point from raw counts and bridge voltages to
-mu_T with its uncertainty budget, and the uncertainty of l/a and mu_T versus the gate time.
+"""
+What accuracy costs in the lab: the gate time
+=============================================
+
+One stand-A operating point from raw counts and bridge voltages to mu_T with its uncertainty budget, and the
+uncertainty of l/a and mu_T versus the gate time.
+
+Run it from the repository root::
 
     python experiments/gate_time.py [--out DIR] [--model kinematic|rigid]
 
@@ -178,7 +184,7 @@ def run(out: Path, spec: ContactSpec, gates=GATES_S) -> tuple[str, pd.DataFrame]
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = argparse.ArgumentParser(description="What accuracy costs in the lab: the gate time")
     parser.add_argument("--out", type=Path, default=Path("gate_time_out"), help="output folder")
     parser.add_argument("--model", choices=sorted(MODELS), default="kinematic", help="contact model (n = 16)")
     args = parser.parse_args(argv)
@@ -191,5 +197,9 @@ def main(argv=None) -> int:
     return 0
 
 
+# %%
+# Simulate the point at each gate time, reduce it, and write the walkthrough, the table and the figure: the
+# counting part of u(l/a) falls as 1/T, until the dynamometer's and the balance's resolutions dominate u(mu_T).
+
 if __name__ == "__main__":
-    raise SystemExit(main())
+    main()
