@@ -7,6 +7,7 @@ Build (from the repository root; offline, warnings are errors, every gallery exa
 
 from __future__ import annotations
 
+import atexit
 import os
 import re
 import shutil
@@ -67,7 +68,8 @@ html_show_sourcelink = False
 html_theme_options = {"navigation_with_keys": True}
 
 # The gallery: the tutorial steps and the virtual experiments in experiments/, executed at build time.
-_GALLERY_OUT = Path(tempfile.mkdtemp(prefix="friction-rig-gallery-"))
+_GALLERY_OUT = Path(tempfile.mkdtemp(prefix="friction-rig-gallery-"))  # the examples' output folders
+atexit.register(shutil.rmtree, _GALLERY_OUT, True)
 _tutorial_outputs = TutorialOutputs(_GALLERY_OUT)
 
 sphinx_gallery_conf = {
