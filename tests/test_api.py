@@ -100,3 +100,16 @@ def test_open_run_of_a_folder_that_is_not_a_run(tmp_path):
         rig.open_run(tmp_path)
     with pytest.raises(ParameterError, match="run folder"):
         rig.open_run(tmp_path / "missing")
+
+
+def test_a_contact_characteristics_run_has_its_table_and_no_log(tmp_path):
+    scene = rig.load_scene("contact_characteristics").with_(
+        {"characteristics.models": ["rigid"], "characteristics.alpha": [0.5, 5.0], "characteristics.n": 8})
+    result = rig.run(scene, tmp_path / "char")
+    table = result.table
+    assert set(table["model"]) == {"rigid"} and sorted(set(table["alpha"])) == [0.5, 5.0]
+    assert len(table) == 2 * len(scene["characteristics.cases"])
+    again = rig.open_run(tmp_path / "char")
+    assert again.scene is None  # such a folder stores no scene
+    with pytest.raises(ParameterError, match="log.h5"):
+        again.reduced
