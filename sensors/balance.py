@@ -97,6 +97,17 @@ class TangentBalance:
 
 
 def stand_a_balance(*, noise_rng: np.random.Generator | None = None) -> TangentBalance:
-    """Stand A's tangent balance with the defaults above; noise on iff its generator is given."""
+    """Stand A's tangent balance with the defaults above.
+
+    Parameters
+    ----------
+    noise_rng : numpy.random.Generator, optional
+        The reading noise's stream; None: no noise (the effect is not built).
+
+    Returns
+    -------
+    TangentBalance
+        The balance [N m readings].
+    """
     noise = None if noise_rng is None else WhiteNoise(DEFAULT_NOISE_STD_N, noise_rng)
     return TangentBalance(noise=noise)

@@ -133,7 +133,18 @@ STAND_A_WEIGHTS = WeightSet((STAND_A_PIECE_N,) * 5)
 
 
 def stacking_schedule(n_pieces: int) -> np.ndarray:
-    """0/1 matrix A [steps x pieces]: load up piece by piece, then unload (2 n + 1 steps)."""
+    """The stacking schedule: load up piece by piece, then unload.
+
+    Parameters
+    ----------
+    n_pieces : int
+        Number of weight pieces, >= 1.
+
+    Returns
+    -------
+    numpy.ndarray
+        0/1 matrix A [steps x pieces], 2 n + 1 steps: row k says which pieces hang at step k.
+    """
     n = validate.integer("n_pieces", n_pieces, 1)
     up = np.tril(np.ones((n + 1, n)), -1)
     return np.vstack([up, up[-2::-1]])
@@ -233,8 +244,30 @@ def fit_line(
     reading_unit: str = "V",
     reading_resolution: float = 0.0,
 ) -> CalibrationRecord:
-    """Least-squares line through (Q_nominal, step-mean reading) with the covariance model above;
-    reading_resolution [reading_unit]: the converter's code width, kept in the record (0: unknown)."""
+    """Least-squares line through (Q_nominal, step-mean reading) with the covariance model above.
+
+    Parameters
+    ----------
+    quantity : numpy.ndarray
+        Nominal calibration quantity per step [quantity_unit, e.g. N or N m], at least 3 steps.
+    readings : numpy.ndarray
+        Step-mean readings [reading_unit].
+    quantity_covariance : numpy.ndarray
+        Covariance of the steps' true quantities [quantity_unit^2] (the weights' errors, shared by
+        the steps that carry the same piece).
+    quantity_name, quantity_unit : str
+        What was calibrated and its unit, kept in the record.
+    reading_unit : str, optional
+        Unit of the readings (default ``"V"``).
+    reading_resolution : float, optional
+        The converter's code width [reading_unit], kept in the record (0: unknown).
+
+    Returns
+    -------
+    CalibrationRecord
+        Sensitivity [reading_unit / quantity_unit], offset [reading_unit], their uncertainties and
+        covariance, the residual scatter.
+    """
     q = validate.finite_array("quantity", quantity, min_length=3)
     y = validate.finite_array("readings", readings, min_length=3)
     if y.size != q.size:
@@ -279,11 +312,32 @@ def run_calibration(
 ) -> CalibrationRecord:
     """Simulate the stacking calibration and fit it.
 
-    ``read(t [s], sensor input [N or N m]) -> DigitalReading`` is the instrument (e.g.
-    ``Dynamometer.read`` or ``Recorder.reader(momentometer)``); steps last ``dwell_s`` [s] sampled
-    at ``sample_rate_Hz`` [Hz] from ``t_start_s`` [s] on; the weights' true values differ from
-    nominal only when ``weight_error_rng`` is given. A clipped sample raises (the loads exceed
-    the converter range).
+    A clipped sample raises (the loads exceed the converter range).
+
+    Parameters
+    ----------
+    read : callable
+        ``read(t [s], sensor input [N or N m]) -> DigitalReading``: the instrument (e.g.
+        ``Dynamometer.read`` or ``Recorder.reader(momentometer)``).
+    loading : Lever or TorqueArm
+        How the weights load the sensor.
+    weights : WeightSet
+        The weight pieces (nominal masses [kg] and their tolerances).
+    quantity_name : str
+        What is calibrated (kept in the record).
+    t_start_s : float, optional
+        Start time [s] (default 0).
+    dwell_s : float, optional
+        Duration of each step [s] (default 2).
+    sample_rate_Hz : float, optional
+        Sampling rate [Hz] (default 50).
+    weight_error_rng : numpy.random.Generator, optional
+        Stream of the weights' true deviations from nominal; None: the weights are exact.
+
+    Returns
+    -------
+    CalibrationRecord
+        The fitted line (rig's reduction reads sensitivity and offset from it).
     """
     t0 = validate.number("t_start_s", t_start_s)
     dwell = validate.number("dwell_s", dwell_s, 0.0, 3600.0, lo_open=True)

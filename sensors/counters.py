@@ -54,7 +54,18 @@ COUNT_QUANTISATION_STD = 1.0 / np.sqrt(6.0)
 
 
 def count_quantisation_variance(fraction: float | None = None) -> float:
-    """Variance of N - f T [counts^2]: r (1 - r) for a known fractional part r of f T, else 1/6."""
+    """Variance of a counter's quantisation N - f T [counts^2].
+
+    Parameters
+    ----------
+    fraction : float, optional
+        The fractional part r of f T in [0, 1) when known; None: unknown (uniform).
+
+    Returns
+    -------
+    float
+        r (1 - r) for a known r, else 1/6 [counts^2].
+    """
     if fraction is None:
         return 1.0 / 6.0
     r = validate.number("fraction", fraction, 0.0, 1.0, hi_open=True)
@@ -192,8 +203,22 @@ def stand_a_counters(
     phases_rad: tuple[float, float] = (0.0, 0.0),
     amplitude_noise_rngs: tuple[np.random.Generator | None, np.random.Generator | None] = (None, None),
 ) -> SpeedCounters:
-    """Stand A: channels "wheel_1" (disc 13) and "wheel_2" (disc 14), 60 marks each (assumed);
-    the amplitude-noise effect of a channel is on iff its generator is given."""
+    """Stand A's speed counters: channels "wheel_1" (disc 13) and "wheel_2" (disc 14).
+
+    Parameters
+    ----------
+    marks : tuple of (int, int), optional
+        Marks per revolution of the two stroboscope discs (default 60 each, assumed).
+    phases_rad : tuple of (float, float), optional
+        Angular phase of each disc's first mark [rad] (default 0).
+    amplitude_noise_rngs : tuple of two numpy.random.Generator or None, optional
+        Stream of each channel's pulse-amplitude noise; None: that effect is off (not built).
+
+    Returns
+    -------
+    SpeedCounters
+        The two channels on a common gate timer [counts].
+    """
     channels = {}
     for i, name in enumerate(("wheel_1", "wheel_2")):
         rng = amplitude_noise_rngs[i]

@@ -99,7 +99,18 @@ def _effects(noise_rng: np.random.Generator | None, drift_rng: np.random.Generat
 def stand_a_dynamometer(
     *, noise_rng: np.random.Generator | None = None, drift_rng: np.random.Generator | None = None
 ) -> Dynamometer:
-    """Stand A's dynamometer 10 with the assumed defaults; an effect is on iff its generator is given."""
+    """Stand A's dynamometer 10 with the assumed defaults.
+
+    Parameters
+    ----------
+    noise_rng, drift_rng : numpy.random.Generator, optional
+        Streams of the amplifier's noise and drift; None: that effect is off (not built).
+
+    Returns
+    -------
+    Dynamometer
+        Force [N] in, converter reading [V] out.
+    """
     noise, drift = _effects(noise_rng, drift_rng)
     return Dynamometer(
         strain_per_newton=STAND_A_STRAIN_PER_NEWTON,
@@ -112,7 +123,18 @@ def stand_a_dynamometer(
 def stand_b_dynamometer(
     *, noise_rng: np.random.Generator | None = None, drift_rng: np.random.Generator | None = None
 ) -> Dynamometer:
-    """One of stand B's dynamometers 5 (F_T or F_V) with the assumed defaults."""
+    """One of stand B's dynamometers 5 (F_T or F_V) with the assumed defaults.
+
+    Parameters
+    ----------
+    noise_rng, drift_rng : numpy.random.Generator, optional
+        Streams of the amplifier's noise and drift; None: that effect is off (not built).
+
+    Returns
+    -------
+    Dynamometer
+        Force [N] in, converter reading [V] out.
+    """
     noise, drift = _effects(noise_rng, drift_rng)
     return Dynamometer(
         strain_per_newton=STAND_B_STRAIN_PER_NEWTON,

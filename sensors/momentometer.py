@@ -85,7 +85,18 @@ class Momentometer:
 def stand_b_momentometer(
     *, noise_rng: np.random.Generator | None = None, drift_rng: np.random.Generator | None = None
 ) -> Momentometer:
-    """Stand B's momentometer 8 with the assumed defaults; an effect is on iff its generator is given."""
+    """Stand B's momentometer 8 with the assumed defaults.
+
+    Parameters
+    ----------
+    noise_rng, drift_rng : numpy.random.Generator, optional
+        Streams of the noise and drift; None: that effect is off (not built).
+
+    Returns
+    -------
+    Momentometer
+        Torque [N m] in, reading [V] out.
+    """
     noise = None if noise_rng is None else WhiteNoise(DEFAULT_NOISE_STD_V, noise_rng)
     drift = None if drift_rng is None else RandomWalkDrift(DEFAULT_DRIFT_DIFFUSION_V, drift_rng)
     return Momentometer(

@@ -23,10 +23,23 @@ def _name_key(kind: str, name: object) -> int:
 
 
 def effect_rng(seed: int, instrument: str, effect: str) -> np.random.Generator:
-    """Generator for one effect of one instrument, e.g. ``effect_rng(7, "dynamometer_10", "noise")``.
+    """Random stream for one effect of one instrument, e.g. ``effect_rng(7, "dynamometer_10", "noise")``.
 
-    ``seed`` is a whole number >= 0; equal arguments give identical streams, different names
-    give statistically independent ones.
+    Equal arguments give identical streams, different names statistically independent ones.
+
+    Parameters
+    ----------
+    seed : int
+        The run's seed, a whole number >= 0.
+    instrument : str
+        The instrument's name.
+    effect : str
+        The effect's name (``"noise"``, ``"drift"``, ...).
+
+    Returns
+    -------
+    numpy.random.Generator
+        The effect's own generator.
     """
     s = validate.integer("seed", seed, 0)
     key = (_name_key("instrument", instrument), _name_key("effect", effect))

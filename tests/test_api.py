@@ -12,6 +12,8 @@ import tomllib
 
 import pandas as pd
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 import rig
 from rig.errors import ParameterError, UnknownNameError
@@ -100,3 +102,37 @@ def test_open_run_of_a_folder_that_is_not_a_run(tmp_path):
         rig.open_run(tmp_path)
     with pytest.raises(ParameterError, match="run folder"):
         rig.open_run(tmp_path / "missing")
+
+
+def test_a_contact_characteristics_run_has_its_table_and_no_log(tmp_path):
+    scene = rig.load_scene("contact_characteristics").with_(
+        {"characteristics.models": ["rigid"], "characteristics.alpha": [0.5, 5.0], "characteristics.n": 8})
+    result = rig.run(scene, tmp_path / "char")
+    table = result.table
+    assert set(table["model"]) == {"rigid"} and sorted(set(table["alpha"])) == [0.5, 5.0]
+    assert len(table) == 2 * len(scene["characteristics.cases"])
+    again = rig.open_run(tmp_path / "char")
+    assert again.scene is None  # such a folder stores no scene
+    with pytest.raises(ParameterError, match="log.h5"):
+        again.reduced
+
+
+KEYS = ["parameters.mu", "contact.n", "contact.model", "contact.poisson", "contact.effects", "scene.seed",
+        "scene.drive", "procedure.gate_time_s", "procedure.sweep.brake_setpoint_N_m", "procedure.fixed",
+        "effects.balance_noise", "outputs.figures", "outputs.paper_figure"]
+HOSTILE = st.recursive(
+    st.none() | st.booleans() | st.integers() | st.floats() | st.text(max_size=8),
+    lambda inner: st.lists(inner, max_size=3) | st.dictionaries(st.text(min_size=1, max_size=6), inner, max_size=3),
+    max_leaves=6)
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(key=st.sampled_from(KEYS) | st.text(min_size=1, max_size=12), value=HOSTILE)
+def test_any_change_gives_a_scene_or_a_named_value_error(key, value):
+    """Hard case: hostile keys and values never escape as anything but a named ValueError."""
+    try:
+        changed = rig.load_scene("default").with_({key: value})
+    except ParameterError as error:  # UnknownNameError included
+        assert str(error)
+    else:
+        assert rig.Scene.from_toml(changed.to_toml(), name="default") == changed

@@ -213,11 +213,10 @@ class Scene:
         UnknownNameError
             A key the scene format does not know, with the closest known key.
         """
-        document = copy.deepcopy(self._document)
-        items = list((changes or {}).items()) if changes is None or isinstance(changes, Mapping) else None
-        if items is None:
+        if changes is not None and not isinstance(changes, Mapping):
             raise ParameterError("changes", type(changes).__name__, "a mapping {dotted key: value}")
-        items += [(self._keyword_key(word), value) for word, value in keywords.items()]
+        items = list((changes or {}).items()) + [(self._keyword_key(word), value) for word, value in keywords.items()]
+        document = copy.deepcopy(self._document)
         for key, value in items:
             _set(document, _split(key), value, key)
         source = self._validated.source

@@ -40,7 +40,24 @@ class DatasetComparison:
 def compare(
     result: pd.DataFrame, digitised: dict[str, pd.DataFrame], sidecar: Sidecar, options: CompareOptions
 ) -> list[DatasetComparison]:
-    """Compare every sidecar dataset (in sidecar order) with each model of RESULT that matches it."""
+    """Compare every sidecar dataset (in sidecar order) with each model of RESULT that matches it.
+
+    Parameters
+    ----------
+    result : pandas.DataFrame
+        The simulated RESULT table, one column per quantity, units in the column names.
+    digitised : dict of str to pandas.DataFrame
+        Digitised points per dataset name: x and y in the units of the sidecar's axes.
+    sidecar : Sidecar
+        The figure's description (axes, datasets, conditions).
+    options : CompareOptions
+        Interpolation, x-shift tolerance, model selection.
+
+    Returns
+    -------
+    list of DatasetComparison
+        One per dataset and matching model, in sidecar order.
+    """
     check_sidecar(sidecar)
     items = []
     for spec in sidecar.datasets:
@@ -73,7 +90,24 @@ def compare_files(
     sidecar_path: str | Path | None = None,
     options: CompareOptions | None = None,
 ) -> tuple[Sidecar, list[DatasetComparison]]:
-    """Read RESULT, the digitised export and its sidecar (default: next to the export) and compare."""
+    """Read RESULT, the digitised export and its sidecar and compare them.
+
+    Parameters
+    ----------
+    result_path : str or pathlib.Path
+        The simulated RESULT CSV (one column per quantity, units in the column names).
+    digitised_path : str or pathlib.Path
+        A WebPlotDigitizer CSV export.
+    sidecar_path : str or pathlib.Path, optional
+        The figure's TOML sidecar (default: the export's name with suffix .toml).
+    options : CompareOptions, optional
+        How to compare (default: linear interpolation, no x shift, every model).
+
+    Returns
+    -------
+    tuple of (Sidecar, list of DatasetComparison)
+        The sidecar read and one comparison per dataset and matching model.
+    """
     sidecar = load_sidecar(sidecar_path if sidecar_path is not None else default_sidecar_path(digitised_path))
     _, curves = read_export(digitised_path)
     frames = digitised_frames(curves, sidecar, str(digitised_path))

@@ -68,7 +68,18 @@ class _Line:
 
 
 def read_export(path: str | Path) -> tuple[ExportLayout, list[DigitisedCurve]]:
-    """Read a WebPlotDigitizer export file (UTF-8, optional BOM); see :func:`parse_export`."""
+    """Read a WebPlotDigitizer export file (UTF-8, optional BOM); see :func:`parse_export`.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The export file.
+
+    Returns
+    -------
+    tuple of (ExportLayout, list of DigitisedCurve)
+        The layout and the datasets in file order.
+    """
     path = Path(path)
     try:
         text = path.read_text(encoding="utf-8-sig")
@@ -80,7 +91,20 @@ def read_export(path: str | Path) -> tuple[ExportLayout, list[DigitisedCurve]]:
 
 
 def parse_export(text: str, source: str = "<text>") -> tuple[ExportLayout, list[DigitisedCurve]]:
-    """Parse the text of an export; return its layout and its datasets (in file order)."""
+    """Parse the text of a WebPlotDigitizer export.
+
+    Parameters
+    ----------
+    text : str
+        The export's CSV text (all datasets, or one dataset without a header).
+    source : str, optional
+        Its name in error messages (default ``"<text>"``).
+
+    Returns
+    -------
+    tuple of (ExportLayout, list of DigitisedCurve)
+        The layout and the datasets in file order (x, y in the units of the figure's axes).
+    """
     lines = _split(text)
     if not lines:
         raise DigitisedFormatError(source, 1, "no data (the file is empty or blank)")

@@ -46,7 +46,20 @@ def parse_max_abs(items: Sequence[str]) -> dict[str, float]:
 
 
 def failures(items: Sequence[DatasetComparison], thresholds: Thresholds) -> list[str]:
-    """One line per failing dataset/model saying which metric exceeded which limit (empty: all pass)."""
+    """One line per failing dataset/model saying which metric exceeded which limit.
+
+    Parameters
+    ----------
+    items : sequence of DatasetComparison
+        The comparisons (rig.compare.compare).
+    thresholds : Thresholds
+        Limits of max |dev| per dataset or y column and of every RMSE [y units].
+
+    Returns
+    -------
+    list of str
+        The failures (empty: all pass).
+    """
     names = {name for item in items for name in (item.spec.name, item.spec.y.column)}
     for name in thresholds.max_abs:
         if name not in names:

@@ -95,9 +95,25 @@ def interpolate(
     y_scale: AxisScale = AxisScale.LINEAR,
     method: Interpolation = Interpolation.LINEAR,
 ) -> np.ndarray:
-    """Simulated y at ``x`` (any shape); NaN outside [x_sim[0], x_sim[-1]] (no extrapolation).
+    """Simulated y at ``x``; NaN outside [x_sim[0], x_sim[-1]] (no extrapolation).
 
-    x_sim must be strictly increasing; on a log axis x and y are interpolated in their logarithm.
+    On a log axis x and y are interpolated in their logarithm.
+
+    Parameters
+    ----------
+    x_sim, y_sim : numpy.ndarray
+        The simulated curve, x strictly increasing [units of the figure's axes].
+    x : numpy.ndarray
+        Where to evaluate it (any shape) [x units].
+    x_scale, y_scale : AxisScale, optional
+        Linear (default) or logarithmic axes.
+    method : Interpolation, optional
+        Linear (default) or PCHIP.
+
+    Returns
+    -------
+    numpy.ndarray
+        y at ``x`` [y units], shaped like ``x``.
     """
     u_sim = np.log(x_sim) if x_scale is AxisScale.LOG else np.asarray(x_sim, dtype=float)
     v_sim = np.log(y_sim) if y_scale is AxisScale.LOG else np.asarray(y_sim, dtype=float)
@@ -124,10 +140,31 @@ def compare_curve(
     method: Interpolation = Interpolation.LINEAR,
     shift_tolerance: float | None = None,
 ) -> CurveComparison:
-    """Compare a simulated curve (x_sim strictly increasing) with digitised points x_ref, y_ref.
+    """Compare a simulated curve with digitised points.
 
-    shift_tolerance: None (no shift) or tol >= 0 [x units on a linear axis, relative (< 1) on a
-    log axis]. Raises ParameterError for bad curves or when no digitised point can be compared.
+    Parameters
+    ----------
+    x_sim, y_sim : numpy.ndarray
+        The simulated curve, x strictly increasing [units of the figure's axes].
+    x_ref, y_ref : numpy.ndarray
+        The digitised points [same units].
+    x_scale, y_scale : AxisScale, optional
+        Linear (default) or logarithmic axes.
+    method : Interpolation, optional
+        Linear (default) or PCHIP interpolation of the simulation.
+    shift_tolerance : float, optional
+        None (no shift) or the largest x shift tried, >= 0 [x units on a linear axis, relative (< 1)
+        on a log axis].
+
+    Returns
+    -------
+    CurveComparison
+        The deviations at the comparable points and their metrics (RMSE, max |dev|, max relative dev).
+
+    Raises
+    ------
+    ParameterError
+        Bad curves, or no digitised point inside the simulated x range.
     """
     x_sim, y_sim = _simulated(x_sim, y_sim, x_scale, y_scale)
     x_ref = np.asarray(x_ref, dtype=float)

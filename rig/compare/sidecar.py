@@ -95,7 +95,25 @@ class Sidecar:
 
 
 def load_sidecar(path: str | Path) -> Sidecar:
-    """Read and validate a sidecar TOML file (LogFormatError for TOML syntax, ParameterError for content)."""
+    """Read and validate a sidecar TOML file.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The sidecar file (UTF-8, optional BOM).
+
+    Returns
+    -------
+    Sidecar
+        The figure's axes (columns, units, scales) and datasets.
+
+    Raises
+    ------
+    LogFormatError
+        TOML syntax.
+    ParameterError
+        Content (unknown keys with a suggestion, bad units or scales).
+    """
     path = Path(path)
     if not path.is_file():
         raise ParameterError("sidecar", str(path), "an existing TOML file (default: DIGITISED with suffix .toml)")
@@ -107,7 +125,20 @@ def load_sidecar(path: str | Path) -> Sidecar:
 
 
 def parse_sidecar(data: Mapping[str, object], source: str = "sidecar") -> Sidecar:
-    """Validate a decoded sidecar (a mapping as tomllib returns it); ``source`` names it in errors."""
+    """Validate a decoded sidecar (a mapping as tomllib returns it).
+
+    Parameters
+    ----------
+    data : Mapping[str, object]
+        The sidecar's tables.
+    source : str, optional
+        Its name in error messages (default ``"sidecar"``).
+
+    Returns
+    -------
+    Sidecar
+        The figure's axes and datasets.
+    """
     validate.known_keys(f"top-level key of {source}", data, TOP_KEYS)
     figure = data.get("figure")
     if not isinstance(figure, str) or not figure.strip():

@@ -69,12 +69,31 @@ def solve(
 ) -> ContactResult:
     """Force coefficients of a steady rolling contact with spin about the rolling point (c, l).
 
-    alpha: track deformability alpha' of eq. (21) [1], >= 0 (inf allowed); c_over_a, l_over_a:
-    rolling point [units of a]; poisson: Poisson ratio [1] in [0, 0.5]; n: cells across 2a
-    (default 32; more rows when b/a < 0.15, rig.contact.grid.rows_across); effects: psi,
-    static_ratio, inertia_number, rolling_length, pressure_exponent (kinematic model; MODEL_EFFECTS
-    lists what the others support). With pressure_exponent the friction coefficient of the units
-    (nu = F/(mu F_N), alpha') is mu(p0), at the peak pressure.
+    Parameters
+    ----------
+    model : str
+        ``"rigid"``, ``"linear"``, ``"fastsim"`` or ``"kinematic"`` (the paper's law, [Koziarski] section 2).
+    shape : str
+        ``"ellipse"`` or ``"line"``.
+    b_over_a : float
+        Semi-axis ratio b/a of the contact [1].
+    alpha : float
+        Track deformability alpha' of [Koziarski] eq. (21) [1], >= 0 (inf allowed).
+    c_over_a, l_over_a : float
+        The rolling point C [units of a].
+    poisson : float
+        Poisson ratio of the pair [1], in [0, 0.5].
+    n : int, optional
+        Cells across 2a (default 32; more rows when b/a < 0.15, rig.contact.grid.rows_across).
+    **effects : float
+        psi, static_ratio, inertia_number, rolling_length, pressure_exponent (kinematic model;
+        MODEL_EFFECTS lists what the others support). With pressure_exponent the friction
+        coefficient of the units (nu = F/(mu F_N), alpha') is mu(p0), at the peak pressure.
+
+    Returns
+    -------
+    ContactResult
+        nu_T, nu_v, nu_0 of [Koziarski] eqs. (26)-(28) [1], nu_Mo, the stick fraction and diagnostics.
     """
     alpha = validate.number("alpha", alpha, 0.0, allow_inf=True)
     c = validate.number("c_over_a", c_over_a)
@@ -104,8 +123,20 @@ def solve_creepage(
 ) -> ContactResult:
     """As :func:`solve`, with the rigid slip given as creepages in elastic units (Creepage).
 
-    xi, eta: centre slip [mu p0 v/G]; phi: spin a G (w0/v)/(mu p0) [1]; phi = 0 (no spin) is
-    allowed: the rolling point is then at infinity and nu_0 is NaN (use nu_Mo).
+    Parameters
+    ----------
+    model, shape, b_over_a, poisson, n, **effects
+        As for :func:`solve`.
+    xi, eta : float
+        Centre slip [mu p0 v/G].
+    phi : float
+        Spin a G (w0/v)/(mu p0) [1]; phi = 0 (no spin) is allowed: the rolling point is then at
+        infinity and nu_0 is NaN (use nu_Mo).
+
+    Returns
+    -------
+    ContactResult
+        The force coefficients [1], as for :func:`solve`.
     """
     creepage = Creepage(
         xi=validate.number("xi", xi), eta=validate.number("eta", eta), phi=validate.number("phi", phi)

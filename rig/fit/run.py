@@ -62,11 +62,38 @@ def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=Non
              effects: Mapping[str, float] | None = None, start: Mapping[str, float] | None = None,
              n: int | None = None, profile: bool = True, polish: str = "auto",
              datasets: Sequence[str] | None = None) -> FitReport:
-    """Fit ``params`` (e.g. ["mu", "psi"]) to DATA; other parameters stay fixed (scene or ``effects``).
+    """Fit ``params`` to measured or digitised data; the other parameters stay fixed.
 
-    sigma: u of digitised y (number or "name=value,..."); start: start values (default: each
-    parameter's own); n: contact grid (default: the scene's, 16 for a digitised curve);
-    datasets: the digitised datasets to fit (default all).
+    Parameters
+    ----------
+    data : str or pathlib.Path
+        log.h5, reduced.csv (log.h5 beside it) or a digitised curve (docs/fit.md).
+    params : sequence of str
+        The parameters to estimate, e.g. ``["mu", "psi"]`` (mu [1], Psi [1], ...).
+    sidecar : str or pathlib.Path, optional
+        The digitised curve's TOML sidecar.
+    sigma : float or str, optional
+        u of digitised y [y units]: a number or ``"name=value,..."``.
+    scene : str or pathlib.Path, optional
+        The scene whose fixed parameters apply (default: the log's).
+    effects : Mapping[str, float], optional
+        Fixed contact effects.
+    start : Mapping[str, float], optional
+        Start values (default: each parameter's own).
+    n : int, optional
+        Contact grid, cells across 2a (default: the scene's, 16 for a digitised curve).
+    profile : bool, optional
+        Profile-likelihood 95 % intervals (default True).
+    polish : str, optional
+        ``"auto"`` (default: a direct-solve refit when the table's error at the optimum matters),
+        ``"check"``, ``"never"`` or ``"always"`` (rig.fit.engine.fit).
+    datasets : sequence of str, optional
+        The digitised datasets to fit (default all).
+
+    Returns
+    -------
+    FitReport
+        The full set's fit (``full``: estimates with 95 % intervals), all ranked effect sets by AIC, cost [s].
     """
     t0 = time.perf_counter()
     free = P.parse_names(params)

@@ -9,3 +9,6 @@ propagation), ``coverage`` (the 95 % half width U95), ``budget`` (per-input vari
 ``result`` (evaluate, propagate, guard, budget), ``stand_a`` and ``stand_b`` (the per-stand
 chains), ``table`` (the reduced table).
 """
+
+__all__ = ["budget", "coefficients", "coverage", "drivers", "equations", "geometry", "iteration", "readings", "result",
+           "stand_a", "stand_b", "table", "uncertainty"]

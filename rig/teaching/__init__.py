@@ -13,6 +13,7 @@ implements (Equations §6).
 | rolling_wheel | a wheel pulled at its centre: rolling without / with slipping, ineq. (5.10) |
 | rolling_resistance | u = f_v r, moment N u, power f_v N v, measuring f_v by pulling |
 | hysteresis | Kelvin-Voigt rim on a rigid plane: p(xi), the p-eps loop, the shift u |
+| gate_time | the gate-time lesson: stand A simulated and reduced per gate time, u(l/a) and u(mu_T) vs T |
 
 The later tutorial steps (spin, rolling point, stand A) use rig.contact, rig.wheel_kinematics
 and rig.runner directly; the scripts are in experiments/tutorial/ (never imported by rig).

@@ -56,3 +56,10 @@ def test_rig_lab_without_flask_names_the_extra():
     assert done.returncode == 2
     assert done.stderr.splitlines() == ['rig lab: error: rig lab needs Flask, which is not installed: '
                                         'pip install "friction-rig[lab]"']
+
+
+def test_import_rig_is_cheap_until_a_name_is_used():
+    probe = (f"import sys, rig\nbefore = sorted(m for m in {HEAVY!r} if m in sys.modules)\n"
+             "rig.list_scenes\nprint(before, 'pandas' in sys.modules)")
+    done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True, timeout=120)
+    assert done.stdout.strip() == "[] True"  # the API's names load the package when first used

@@ -3,31 +3,22 @@
 
 Two seeded repeats (Psi = 1.6 and Psi = 1) of the fig10 procedure (dynamic drive, instrument
 effects on) with 5 points per load, 3 s gates and a coarse n = 8 grid (the full 40-repeat statistics are quoted in
-docs/fit.md from experiments/fit_recovery.py). Deterministic: fixed seeds.
+docs/fit.md from experiments/fit_recovery.py, which repeats rig.fit.recovery.one_repeat). Deterministic: fixed seeds.
 """
 
 from __future__ import annotations
 
-import importlib.util
-from pathlib import Path
-
 import pytest
 
-SCRIPT = Path(__file__).resolve().parents[2] / "experiments" / "fit_recovery.py"
+from rig.fit.recovery import one_repeat
+
 SMALL = dict(points=5, gate_s=3.0, n=8, table_points=(13, 3, 5))
-
-
-def _recovery():
-    spec = importlib.util.spec_from_file_location("fit_recovery", SCRIPT)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 @pytest.fixture(scope="module")
 def repeats(tmp_path_factory):
     folder = tmp_path_factory.mktemp("recovery")
-    one = _recovery().one_repeat
+    one = one_repeat
     plastic = [one(seed, mu=0.35, psi=1.6, folder=folder, **SMALL) for seed in (11,)]
     elastic = [one(seed, mu=0.35, psi=1.0, folder=folder, **SMALL) for seed in (13,)]
     return plastic, elastic
@@ -56,7 +47,7 @@ def observable(tmp_path_factory):
     sweep can see Psi (at fig10's operating points Psi 1 -> 1.6 moves F_y/F_N by <= 1.1e-4, below the
     dynamometer's calibration error; docs/fit.md, "What it does with the acceptance data")."""
     folder = tmp_path_factory.mktemp("recovery_rx")
-    one = _recovery().one_repeat
+    one = one_repeat
     return (one(11, mu=0.35, psi=1.6, folder=folder, radius_x=0.02, **SMALL),
             one(13, mu=0.35, psi=1.0, folder=folder, radius_x=0.02, **SMALL))
 

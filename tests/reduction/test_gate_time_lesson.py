@@ -1,4 +1,4 @@
-"""experiments/gate_time.py (the lesson of docs/measurement-method.md) on short gates with the rigid law.
+"""rig.teaching.gate_time (the lesson of docs/measurement-method.md; experiments/gate_time.py runs it) on short gates with the rigid law.
 
 Independent numbers: the counting resolution of Equations §2, u(l) = |dl/di_k| u(i_k) with
 u(i_k)/i_k = u_N sqrt(1/N1^2 + 1/N2^2), u_N = 1/sqrt(6) (counters' quantisation, docs/instruments.md),
@@ -8,26 +8,17 @@ proportional to 1/F_N).
 
 from __future__ import annotations
 
-import importlib.util
 import math
-import sys
-from pathlib import Path
 
 import pytest
 
+from rig.teaching import gate_time
 from rig.wheel_kinematics import dl_dratio
-
-SCRIPT = Path(__file__).resolve().parents[2] / "experiments" / "gate_time.py"
 
 
 @pytest.fixture(scope="module")
 def lesson():
-    spec = importlib.util.spec_from_file_location("gate_time_lesson", SCRIPT)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module  # dataclasses look their module up there
-    spec.loader.exec_module(module)
-    yield module
-    sys.modules.pop(spec.name, None)
+    return gate_time
 
 
 @pytest.fixture(scope="module")

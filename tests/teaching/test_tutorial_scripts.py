@@ -1,14 +1,16 @@
 """Smoke test of the tutorial scripts (experiments/tutorial/): each runs, writes its PNG and CSV into
 the folder given by -o, and its CSV holds numbers that can be checked independently.
 
-The scripts are loaded from their files (experiments/ is not a package and rig never imports it);
-the contact steps run on a coarse grid and step 10 on the quick stand-A scene.
+Each script runs as a reader runs it, ``python experiments/tutorial/<step>.py -o DIR ...`` in a
+subprocess (experiments/ is not a package: nothing imports it); the contact steps run on a coarse
+grid and step 10 on the quick stand-A scene.
 """
 
 from __future__ import annotations
 
-import importlib.util
 import math
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -23,13 +25,12 @@ PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
 def run_step(name: str, out: Path, *extra: str) -> tuple[Path, pd.DataFrame]:
-    """Load experiments/tutorial/<name>.py, run main(-o out ...); return the PNG and the CSV table."""
-    spec = importlib.util.spec_from_file_location(f"tutorial_{name}", TUTORIAL / f"{name}.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    png, csv = module.main(["-o", str(out), *extra])
-    assert png == out / f"{name}.png" and png.read_bytes()[:8] == PNG_SIGNATURE and png.stat().st_size > 10_000
-    assert csv == out / f"{name}.csv"
+    """Run ``python experiments/tutorial/<name>.py -o out ...``; return its PNG and its CSV table."""
+    done = subprocess.run([sys.executable, str(TUTORIAL / f"{name}.py"), "-o", str(out), *extra],
+                          capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    png, csv = out / f"{name}.png", out / f"{name}.csv"
+    assert png.read_bytes()[:8] == PNG_SIGNATURE and png.stat().st_size > 10_000
     return png, pd.read_csv(csv)
 
 
