@@ -50,7 +50,7 @@ suppress_warnings = ["myst.header"]
 # API reference: autosummary over each package's __all__, numpydoc docstrings.
 autosummary_generate = True
 autosummary_ignore_module_all = False
-autosummary_imported_members = True
+autosummary_imported_members = False
 autodoc_default_options: dict[str, object] = {}
 autodoc_typehints = "none"
 numpydoc_show_class_members = False
