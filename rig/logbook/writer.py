@@ -107,10 +107,12 @@ class LogWriter:
             raise ParameterError("point.index", point.index, "an index not yet written",
                                  hint=f"done: {sorted(self.done)}")
         frame = journal.encode(journal.entry_of(point, truth))
-        with open(self.parts / JOURNAL, "ab") as handle:
+        with atomic.naming(self.parts / JOURNAL), open(self.parts / JOURNAL, "ab", buffering=0) as handle:
             if handle.tell() != self._end:  # the torn frame of a write that failed half-way
                 handle.truncate(self._end)
-            handle.write(frame)
+            view = memoryview(frame)
+            while view:  # a full disk may take part of the frame before it refuses the rest
+                view = view[handle.write(view):]
             if time.monotonic() - self._synced >= FSYNC_INTERVAL_S:
                 self._sync(handle)
         self._frames[point.index] = journal.Frame(point.index, self._end, len(frame))
@@ -119,7 +121,7 @@ class LogWriter:
     def finalize(self) -> Path:
         """Assemble ``path`` from the journal (atomically), remove the staging folder, return ``path``."""
         self._check_open()
-        with open(self.parts / JOURNAL, "ab") as handle:
+        with atomic.naming(self.parts / JOURNAL), open(self.parts / JOURNAL, "ab") as handle:
             self._sync(handle)
         if self._frames or not self._base:
             with atomic.new_hdf5(self.path, tmp_folder=self.parts) as log:

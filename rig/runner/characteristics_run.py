@@ -11,6 +11,7 @@ from pathlib import Path
 from tqdm import tqdm
 
 from rig.characteristics import plot, sweep
+from rig.logbook.atomic import naming
 from rig.runner.outputs import CHARACTERISTICS_CSV as CSV_NAME
 from rig.runner.outputs import CHARACTERISTICS_FIGURE as FIGURE_NAME
 from rig.runner.outputs import SUMMARY_NAME, output_folder, staged_outputs
@@ -39,7 +40,8 @@ def _write_outputs(scene: CharacteristicsScene, table, total: int, staging: Path
     """Write the CSV, the figure and summary.txt into ``staging``; returns the summary text."""
     table.to_csv(staging / CSV_NAME, index=False)
     if scene.outputs.figures:
-        plot(table, staging / FIGURE_NAME, f"{scene.description} (poisson {scene.poisson:g})")
+        with naming(staging.parent / FIGURE_NAME):
+            plot(table, staging / FIGURE_NAME, f"{scene.description} (poisson {scene.poisson:g})")
     files = _files(scene)
     text = "\n".join([
         "friction-rig run summary",

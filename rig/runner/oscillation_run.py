@@ -13,6 +13,7 @@ from pathlib import Path
 import pandas as pd
 from tqdm import tqdm
 
+from rig.logbook.atomic import naming
 from rig.oscillation import amplitude_sweep, cycle_work, plateau_onset, plot_sweep, plot_work_map
 from rig.runner.outputs import OSCILLATION_CSV as CSV_NAME
 from rig.runner.outputs import OSCILLATION_FIGURE as SWEEP_FIGURE
@@ -39,8 +40,10 @@ def run_oscillation_scene(scene: OscillationScene, out_dir: Path, *, progress: b
     work = cycle_work(first, scene.map_stroke_ratio, scene.n)
     with staged_outputs(out_dir, replace_previous=True) as staging:
         pd.concat(tables, ignore_index=True).to_csv(staging / CSV_NAME, index=False)
-        plot_sweep(tables[0], staging / SWEEP_FIGURE, f"{scene.description}\n{first.label}, n = {scene.n}")
-        plot_work_map(work, staging / MAP_FIGURE, f"{first.label}, e = {scene.map_stroke_ratio:g}")
+        with naming(out_dir / SWEEP_FIGURE):
+            plot_sweep(tables[0], staging / SWEEP_FIGURE, f"{scene.description}\n{first.label}, n = {scene.n}")
+        with naming(out_dir / MAP_FIGURE):
+            plot_work_map(work, staging / MAP_FIGURE, f"{first.label}, e = {scene.map_stroke_ratio:g}")
         text = _summary(scene, tables)
         (staging / SUMMARY_NAME).write_text(text, encoding="utf-8")
     return RunReport(out_dir, FILES, total, total, 0, (), False, text)
