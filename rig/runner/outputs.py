@@ -23,7 +23,7 @@ import shutil
 from collections.abc import Iterator
 from pathlib import Path
 
-from rig.errors import ParameterError
+from rig.errors import ParameterError, RigError
 from rig.logbook.atomic import fsync_dir, fsync_file, write_error
 from rig.scenes.stand_scene import PAPER_FIGURE_NAMES
 
@@ -40,6 +40,31 @@ WORK_MAP_FIGURE = "work_map.png"
 OUTPUT_NAMES = (SUMMARY_NAME, REDUCED_CSV, REDUCED_FIGURE, CHARACTERISTICS_CSV, CHARACTERISTICS_FIGURE,
                 OSCILLATION_CSV, OSCILLATION_FIGURE, WORK_MAP_FIGURE, *(f"{name}.png" for name in PAPER_FIGURE_NAMES))
 """Every file a run may write besides its log (summary.txt first: it is removed first, renamed last)."""
+
+
+STAND_KIND, CHARACTERISTICS_KIND, OSCILLATION_KIND = "stand", "contact-characteristics", "oscillation"
+RUN_MARKS = {
+    STAND_KIND: ("log.h5", "log.h5.parts", REDUCED_CSV),
+    CHARACTERISTICS_KIND: (CHARACTERISTICS_CSV,),
+    OSCILLATION_KIND: (OSCILLATION_CSV,),
+}
+"""The files that show which kind of run a folder holds."""
+
+
+class ForeignOutputsError(RigError):
+    """The output folder holds another kind of run's outputs (which this run would delete)."""
+
+
+def claim_folder(out_dir: Path, kind: str) -> None:
+    """Refuse, by name, a folder holding the outputs of another kind of run than ``kind`` (one of
+    RUN_MARKS): a run replaces the previous outputs of its folder and must not delete another
+    kind's. Call it with the folder's lock held (rig.runner.folder_lock)."""
+    for other, marks in RUN_MARKS.items():
+        found = [name for name in marks if (out_dir / name).exists()]
+        if other != kind and found:
+            raise ForeignOutputsError(
+                f"{out_dir} holds the outputs of a {other} run ({', '.join(found)}); a {kind} run there would "
+                "replace them: choose another output folder")
 
 
 def output_folder(out_dir: object) -> Path:
