@@ -73,6 +73,9 @@ class LogWriter:
             raise ParameterError("metadata", metadata, "a RunMetadata")
         if not self.path.parent.is_dir():
             raise ParameterError("path", str(self.path), "a file in an existing folder")
+        if self.path.exists() and not self.path.is_file():
+            raise ParameterError("path", str(self.path), "a log file, or a name not yet taken",
+                                 hint="a folder (or another non-file) of that name is in the way; move it")
         self.parts = staging_dir(self.path)
         self._finalized = False
         for leftover in self.path.parent.glob(f".{self.path.name}.*{atomic.TMP_SUFFIX}"):
@@ -167,17 +170,24 @@ class LogWriter:
                 yield journal.entry_of(record, values)
 
     def _finished_points(self) -> dict[int, int]:
-        """{index: row} of a finished columnar log of this same run at ``path`` (else empty)."""
+        """{index: row} of the undamaged points of a finished columnar log of this same run at
+        ``path`` (else empty). Every point is read (its checksums checked): a damaged point is
+        simulated again, and a log damaged as a whole is written anew."""
+        if not self.path.is_file():
+            return {}
         try:
             with open_log(self.path) as handle:
                 if handle.attrs.get(L.ATTR_FORMAT_VERSION) != L.FORMAT_VERSION:
                     return {}
                 if same_run(self.metadata, h5format.read_metadata(handle)) is not None:
                     return {}
-                index = ColumnarLog(handle).index
-        except LogFormatError:  # no log, or a damaged one: written anew
+                log = ColumnarLog(handle)
+                log.quantities(None, L.TRUTH_GROUP)  # the truth is laid out again with the points
+                good = [int(k) for k, record in log.records() if not isinstance(record, LogFormatError)]
+                rows = {int(k): row for row, k in enumerate(log.index)}
+        except (LogFormatError, ParameterError):  # a damaged log: written anew
             return {}
-        return {int(k): row for row, k in enumerate(index)}
+        return {k: rows[k] for k in good}
 
     def _check_open(self) -> None:
         if self._finalized:

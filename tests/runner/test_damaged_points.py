@@ -14,6 +14,7 @@ values agree with the old log's to the size of that change, not to the last digi
 from __future__ import annotations
 
 import shutil
+import warnings
 from pathlib import Path
 
 import h5py
@@ -114,3 +115,58 @@ def test_point_missing_a_dataset(old_log, new_run, tmp_path, capsys):
         f["points/readings/T2"][2] = np.nan
     table = _reduce_damaged(log, drop_t2_of_point_2, capsys)
     _check_only_point_2_lost(table, "'T2' is missing", good_csv=new_run / "reduced.csv")
+
+
+def _row_of_point_2(f, path: str, value) -> None:
+    f[path][2] = value
+
+
+def _sample_of_point_2(value):
+    def damage(f):
+        first = f[f"points/channels/{CHANNEL}/first"][2]
+        f[f"points/channels/{CHANNEL}/samples"][first + 17] = value
+    return damage
+
+
+DAMAGE_KINDS = {
+    # kind: (damage, parts of the reason: the dataset, the point, the value)
+    "inf reading": (lambda f: _row_of_point_2(f, "points/readings/T2", np.inf),
+                    ("/points/readings/T2", "point 2", "inf is not finite")),
+    "sample 1e300": (_sample_of_point_2(1e300), (f"/points/channels/{CHANNEL}/samples[17]", "point 2", "1e+300")),
+    "normal force <= 0": (lambda f: _row_of_point_2(f, "points/settings/normal_force", -5.0),
+                          ("/points/settings/normal_force", "point 2", "-5.0")),
+    "sensitivity 0": (lambda f: _row_of_point_2(f, f"points/calibration/{CHANNEL}/sensitivity", 0.0),
+                      (f"/points/calibration/{CHANNEL}/sensitivity", "point 2", "sensitivity = 0.0")),
+    "negative u": (lambda f: _row_of_point_2(f, f"points/calibration/{CHANNEL}/u_sensitivity", -1e-3),
+                   (f"/points/calibration/{CHANNEL}/u_sensitivity", "point 2", "-0.001")),
+    "length out of range": (lambda f: _row_of_point_2(f, f"points/channels/{CHANNEL}/length", 10**9),
+                            (f"/points/channels/{CHANNEL}", "point 2", "length = 1000000000", "outside")),
+    "first out of range": (lambda f: _row_of_point_2(f, f"points/channels/{CHANNEL}/first", -3),
+                           (f"/points/channels/{CHANNEL}", "point 2", "first = -3", "outside")),
+}
+
+
+@pytest.mark.parametrize("kind", sorted(DAMAGE_KINDS))
+def test_a_damaged_value_costs_its_point_only(kind, new_run, tmp_path, capsys):
+    """Each kind of damage of one point's value: that point NaN with a reason naming the file, the
+    dataset, the point and the value; the others as from the undamaged log; exit 3; no warning."""
+    damage, parts = DAMAGE_KINDS[kind]
+    log = tmp_path / "log.h5"
+    shutil.copyfile(new_run / "log.h5", log)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # e.g. numpy's overflow RuntimeWarning on 1e300
+        table = _reduce_damaged(log, damage, capsys)
+    _check_only_point_2_lost(table, str(log), *parts, good_csv=new_run / "reduced.csv")
+
+
+def test_a_rerun_into_a_folder_with_a_damaged_finished_log_rewrites_it(new_run, tmp_path, capsys):
+    folder = tmp_path / "run"
+    shutil.copytree(new_run, folder)
+    with h5py.File(folder / "log.h5", "r+") as f:
+        first = f[f"points/channels/{CHANNEL}/first"][2]
+        f[f"points/channels/{CHANNEL}/samples"][first + 17] = np.nan
+    data = bytearray((folder / "log.h5").read_bytes())
+    assert rig.cli.main(["run", str(SCENE), "-o", str(folder)]) == 0, capsys.readouterr().err
+    assert "1 simulated now" in capsys.readouterr().out  # the damaged point only
+    assert (folder / "reduced.csv").read_text() == (new_run / "reduced.csv").read_text()
+    assert (folder / "log.h5").read_bytes() != bytes(data)
