@@ -186,31 +186,43 @@ class FailureProofFile:
 
 
 @contextlib.contextmanager
+def writing_hdf5(path: Path, name: Path | None = None) -> Iterator[h5py.File]:
+    """Yield a new HDF5 file at ``path`` (an existing, empty file: a temporary one) written through
+    a :class:`FailureProofFile`; a write that fails (full disk, I/O error), or an HDF5 error
+    inside the block, raises an OSError naming ``name`` (default ``path``) and the cause once the
+    file is closed. Use it for every HDF5 file this package writes."""
+    name = path if name is None else name
+    sink = FailureProofFile(path)
+    try:
+        try:
+            with h5py.File(sink, "w", libver=LIBVER) as handle:
+                yield handle
+        except (OSError, RuntimeError) as error:  # raised by HDF5 (h5py) inside the block
+            if sink.error is None and isinstance(error, OSError) and error.filename is not None:
+                raise  # about another file (one the block reads)
+            raise write_error(name, sink.error or error) from None
+        except BaseException:
+            if sink.error is not None:
+                raise write_error(name, sink.error) from None
+            raise
+        if sink.error is not None:
+            raise write_error(name, sink.error)
+    finally:
+        sink.close()
+
+
+@contextlib.contextmanager
 def new_hdf5(target: Path, tmp_folder: Path | None = None, *, mode_of: Path | None = None) -> Iterator[h5py.File]:
     """Yield a new, writable HDF5 file that replaces ``target`` atomically when the block ends.
 
     The temporary file lives in ``tmp_folder`` (default: the target's folder; it must be on the
-    same file system); ``mode_of``: a file whose permission bits the new file gets. A write that fails (full disk, I/O error), or an HDF5 error inside the
-    block, raises an OSError naming ``target`` and the cause; ``target`` is then untouched.
+    same file system); ``mode_of``: a file whose permission bits the new file gets. A write that fails
+    (full disk, I/O error), or an HDF5 error inside the block, raises an OSError naming ``target``
+    and the cause (:func:`writing_hdf5`); ``target`` is then untouched.
     """
     folder = target.parent if tmp_folder is None else tmp_folder
     with replace_atomically(target, temporary_path(folder, target.name)) as tmp:
         if mode_of is not None:
             shutil.copymode(mode_of, tmp)
-        sink = FailureProofFile(tmp)
-        try:
-            try:
-                with h5py.File(sink, "w", libver=LIBVER) as handle:
-                    yield handle
-            except (OSError, RuntimeError) as error:  # raised by HDF5 (h5py) inside the block
-                if sink.error is None and isinstance(error, OSError) and error.filename is not None:
-                    raise  # about another file (one the block reads)
-                raise write_error(target, sink.error or error) from None
-            except BaseException:
-                if sink.error is not None:
-                    raise write_error(target, sink.error) from None
-                raise
-            if sink.error is not None:
-                raise write_error(target, sink.error)
-        finally:
-            sink.close()
+        with writing_hdf5(tmp, target) as handle:
+            yield handle
