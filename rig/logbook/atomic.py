@@ -102,15 +102,18 @@ def temporary_path(folder: Path, stem: str) -> Path:
 def replace_atomically(target: Path, tmp: Path) -> Iterator[Path]:
     """Yield ``tmp`` to be written (and closed) by the caller, then move it over ``target``.
 
-    On an exception inside the block ``tmp`` is removed and ``target`` is untouched.
+    On an exception inside the block ``tmp`` is removed and ``target`` is untouched; an OSError
+    without a file name (a write that found the disk full) or naming ``tmp`` is raised naming ``target``.
     """
     try:
         yield tmp
         fsync_file(tmp)
         os.replace(tmp, target)
-    except BaseException:
+    except BaseException as error:
         with contextlib.suppress(FileNotFoundError):
             tmp.unlink()
+        if isinstance(error, OSError) and error.filename in (None, str(tmp), tmp):
+            raise write_error(target, error) from None
         raise
     fsync_dir(target.parent)
 
