@@ -30,6 +30,20 @@ def _rebuild(cls: type, message: str, state: dict) -> NamedError:
     return error
 
 
+MAX_SHOWN = 200
+"""Longest value [characters] an error message quotes; a longer one is cut in the middle."""
+
+
+def shown(value: object) -> str:
+    """``repr(value)`` cut to MAX_SHOWN characters (its start and end kept, the length said), so
+    that a 100 000-character value gives a readable one-line error."""
+    text = repr(value)
+    if len(text) <= MAX_SHOWN:
+        return text
+    keep = (MAX_SHOWN - 40) // 2
+    return f"{text[:keep]} ... {text[-keep:]} ({len(text)} characters)"
+
+
 class ParameterError(NamedError, ValueError):
     """A parameter or input is outside its valid range (or not a number where one is needed).
 
@@ -43,7 +57,7 @@ class ParameterError(NamedError, ValueError):
         self.value = value
         self.valid = valid
         self.hint = hint
-        message = f"{name} = {value!r} is not valid; valid: {valid}"
+        message = f"{name} = {shown(value)} is not valid; valid: {valid}"
         if hint:
             message += f" ({hint})"
         super().__init__(message)

@@ -55,7 +55,7 @@ def main(argv: list[str] | None = None) -> int:
     try:  # imports the subcommands (numpy, scipy, ...): Ctrl-C may come here too
         parser = build_parser(first if first in SUBCOMMANDS else None)
     except KeyboardInterrupt:
-        print("rig: interrupted", file=sys.stderr)
+        print(f"rig {first}: interrupted" if first in SUBCOMMANDS else "rig: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
     args = parser.parse_args(argv)
     if args.command is None:

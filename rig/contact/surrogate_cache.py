@@ -18,6 +18,7 @@ import enum
 import json
 import logging
 import os
+import sys
 import tempfile
 import zipfile
 from collections.abc import Callable
@@ -25,6 +26,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+from tqdm import tqdm
 
 from rig.contact.surrogate import TABLE_FORMAT, SurrogateTable, TableInputs, build_table
 from rig.errors import RigError
@@ -128,6 +130,11 @@ def load_or_build(
         except TableFileError as error:
             reason = str(error)
             log.warning("rebuilding the surrogate table: %s", reason)
-    table = build_table(inputs, progress=progress, workers=workers)
+    if progress is None:  # a build may take minutes: a progress line on a terminal (stderr), after 2 s
+        with tqdm(total=int(np.prod(inputs.points)), desc="surrogate table", unit="node", delay=2.0, leave=False,
+                  disable=not sys.stderr.isatty()) as bar:
+            table = build_table(inputs, progress=lambda done, _: bar.update(done - bar.n), workers=workers)
+    else:
+        table = build_table(inputs, progress=progress, workers=workers)
     save_table(table, path)
     return table, CacheOutcome(CacheStatus.REBUILT if reason else CacheStatus.BUILT, path, reason)

@@ -32,9 +32,13 @@ SCALAR_KINDS = ("settings", "readings", "truth")
 
 MAX_CHUNK = 1 << 16
 """Largest chunk of a dataset [elements] (512 KiB of float64)."""
-COLUMN_FILTERS = {"compression": "gzip", "compression_opts": 4, "shuffle": True}
-"""Filters of the one-row-per-point columns (deflate is in every HDF5 build: plain h5py reads it);
-the channels' samples stay unfiltered."""
+COLUMN_FILTERS = {"compression": "gzip", "compression_opts": 4, "shuffle": True, "fletcher32": True}
+"""Filters of the one-row-per-point columns (deflate and Fletcher-32 are in every HDF5 build:
+plain h5py reads them); the channels' samples get the Fletcher-32 checksum only
+(SAMPLE_FILTERS). A chunk whose bytes changed on disk then fails to read instead of giving other
+numbers."""
+SAMPLE_FILTERS = {"fletcher32": True}
+"""Filters of the channels' samples: a checksum per chunk, no compression."""
 
 
 def chunks_for(n: int) -> tuple[int]:
@@ -112,7 +116,7 @@ def write_columnar(root: h5py.Group, entries: Callable[[], Iterable[Entry]]) -> 
         total = layout.samples[name]
         group = channels_group.create_group(name)
         samples[name] = group.create_dataset(L.SAMPLES_DATASET, shape=(total,), dtype=np.float64,
-                                             chunks=chunks_for(total), maxshape=(None,))
+                                             chunks=chunks_for(total), maxshape=(None,), **SAMPLE_FILTERS)
         samples[name].attrs[L.ATTR_UNITS] = layout.channels[name]
     pending: dict[str, list[np.ndarray]] = {name: [] for name in layout.channels}
     written = dict.fromkeys(layout.channels, 0)
@@ -205,24 +209,29 @@ class ColumnarLog:
             raise h5format.fail(ds, f"expected a 1-D {'integer' if kinds == 'iu' else 'numeric'} dataset of "
                                     f"{'one row per point' if expected is None else f'{expected} rows'}, "
                                     f"found shape {ds.shape} dtype {ds.dtype}")
-        return ds[()]
+        return read_dataset(ds)
 
-    def _quantity_rows(self, group: h5py.Group, name: str) -> tuple[np.ndarray, str]:
+    def _quantity_rows(self, group: h5py.Group, name: str, faults: dict[int, str] | None = None) -> tuple[np.ndarray, str]:
+        """Rows and unit of a quantity; a non-finite row raises, or with ``faults`` ({row: what is
+        wrong}) is recorded there as that point's fault."""
         values = self._rows(group, name, "iuf").astype(np.float64, copy=False)
-        bad = np.flatnonzero(np.isinf(values))
-        if bad.size:
-            raise h5format.fail(group[name], f"point {int(self.index[bad[0]])}: value {h5format.shown(values[bad[0]])} is not finite")
+        for row in np.flatnonzero(np.isinf(values)):
+            what = f"point {int(self.index[row])}: value {h5format.shown(values[row])} is not finite"
+            if faults is None:
+                raise h5format.fail(group[name], what)
+            faults.setdefault(int(row), str(h5format.fail(group[name], what)))
         return values, h5format.units_of(group[name])
 
-    def quantities(self, kind: str, root: str = L.POINTS_GROUP) -> dict[str, tuple[np.ndarray, str]]:
+    def quantities(self, kind: str, root: str = L.POINTS_GROUP,
+                   faults: dict[int, str] | None = None) -> dict[str, tuple[np.ndarray, str]]:
         """{name: (rows, unit)} of ``settings``/``readings`` (or of ``/truth`` with kind None)."""
         group = h5format.subgroup(self.handle, root) if kind is None else h5format.subgroup(self.points, kind)
-        return {name: self._quantity_rows(group, name) for name in group if name != L.INDEX_DATASET}
+        return {name: self._quantity_rows(group, name, faults) for name in group if name != L.INDEX_DATASET}
 
-    def calibration(self) -> dict[tuple[str, str], tuple[np.ndarray, str]]:
+    def calibration(self, faults: dict[int, str] | None = None) -> dict[tuple[str, str], tuple[np.ndarray, str]]:
         """{(record, field): (rows, unit)}; see also :meth:`empty_records`."""
         records = h5format.subgroup(self.points, L.CALIBRATION_GROUP)
-        return {(rec, name): self._quantity_rows(h5format.subgroup(records, rec), name)
+        return {(rec, name): self._quantity_rows(h5format.subgroup(records, rec), name, faults)
                 for rec in records for name in h5format.subgroup(records, rec)}
 
     def empty_records(self) -> list[str]:
@@ -230,12 +239,12 @@ class ColumnarLog:
         records = h5format.subgroup(self.points, L.CALIBRATION_GROUP)
         return [rec for rec in records if len(h5format.subgroup(records, rec)) == 0]
 
-    def counters(self) -> tuple[np.ndarray, dict[str, tuple[np.ndarray, np.ndarray]]] | None:
+    def counters(self, faults: dict[int, str] | None = None) -> tuple[np.ndarray, dict[str, tuple[np.ndarray, np.ndarray]]] | None:
         """(gate time rows [s], {name: (count rows, marks rows)}), or None without counters."""
         if L.COUNTERS_GROUP not in self.points:
             return None
         group = h5format.subgroup(self.points, L.COUNTERS_GROUP)
-        gate, unit = self._quantity_rows(group, L.GATE_TIME_DATASET)
+        gate, unit = self._quantity_rows(group, L.GATE_TIME_DATASET, faults)
         if unit != "s":
             raise h5format.fail(group[L.GATE_TIME_DATASET], f"attribute 'units' = {unit!r}, expected 's'")
         counts, marks = h5format.subgroup(group, L.COUNTS_GROUP), h5format.subgroup(group, L.MARKS_GROUP)
@@ -248,15 +257,26 @@ class ColumnarLog:
             out[name] = (self._rows(counts, name, "iu"), self._rows(marks, name, "iu"))
         return gate, out
 
-    def channel(self, name: str) -> tuple[h5py.Dataset, str, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """(samples dataset, unit, first, length, sample rate [Hz], start time [s]) of channel ``name``."""
+    def channel(self, name: str, faults: dict[int, str] | None = None
+                ) -> tuple[h5py.Dataset, str, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """(samples dataset, unit, first, length, sample rate [Hz], start time [s]) of channel ``name``;
+        a point whose first/length lie outside the samples raises, or with ``faults`` is recorded
+        there (its length then reads as 0)."""
         group = h5format.subgroup(h5format.subgroup(self.points, L.CHANNELS_GROUP), name)
         samples = group.get(L.SAMPLES_DATASET)
         if not isinstance(samples, h5py.Dataset) or samples.ndim != 1 or samples.dtype.kind not in "iuf":
             raise h5format.fail(group, f"dataset {L.SAMPLES_DATASET!r} is missing or not 1-D numeric")
         first, length = self._rows(group, L.FIRST_SAMPLE_DATASET, "iu"), self._rows(group, L.SAMPLE_COUNT_DATASET, "iu")
-        if np.any(length < 0) or np.any(first < 0) or np.any(first + length > samples.shape[0]):
-            raise h5format.fail(group, "first/length point outside the samples")
+        total = samples.shape[0]
+        outside = (length < 0) | (first < 0) | (first > total) | (length > total - np.minimum(first, total))
+        for row in np.flatnonzero(outside):
+            what = (f"point {int(self.index[row])}: first = {int(first[row])}, length = {int(length[row])} "
+                    f"lie outside the {total} samples")
+            if faults is None:
+                raise h5format.fail(group, what)
+            faults.setdefault(int(row), str(h5format.fail(group, what)))
+        if outside.any():
+            length = np.where(outside, 0, length)
         rate = self._rows(group, L.ATTR_SAMPLE_RATE, "f")
         start = self._rows(group, L.ATTR_START_TIME, "f")
         return samples, h5format.units_of(samples), first, length, rate, start
@@ -300,23 +320,49 @@ class ColumnarLog:
         damaged point (a non-finite sample, a bad counter): the error names the dataset, the
         point and the bad value, and the other points are read as usual."""
         rows = range(self.n) if rows is None else list(rows)
-        scalars = {kind: self.quantities(kind) for kind in ("settings", "readings")}
-        calibration = self.calibration()
+        faults: dict[int, str] = {}  # row -> what is wrong with that point alone
+        scalars = {kind: self.quantities(kind, faults=faults) for kind in ("settings", "readings")}
+        calibration = self.calibration(faults)
         self._empty = self.empty_records()
-        counters = self.counters()
+        counters = self.counters(faults)
         # the counters' objects, named in a decoding error: looked up once (an h5py lookup costs ~0.1 ms)
         counter_objects = None if counters is None else (self.points[L.COUNTERS_GROUP], {
             name: self.points[f"{L.COUNTERS_GROUP}/{L.COUNTS_GROUP}/{name}"] for name in counters[1]})
-        channels = {name: self.channel(name) for name in self.channel_names()}
+        channels = {name: self.channel(name, faults) for name in self.channel_names()}
         blocks = _blocks(list(rows), channels)
         for block in blocks:
-            data = {name: _read_block(channels[name], block) for name in channels}
+            data = {name: self._read_block(channels[name], block, faults) for name in channels}
             for row in block:
                 index = int(self.index[row])
+                if row in faults:
+                    yield index, LogFormatError(faults[row])
+                    continue
                 try:
                     yield index, self._record(row, scalars, calibration, counters, counter_objects, channels, data)
                 except LogFormatError as error:
                     yield index, error
+
+    def _read_block(self, channel, rows: list[int], faults: dict[int, str]) -> tuple[int, np.ndarray]:
+        """The rows' samples of one channel (rig.logbook.columnar._read_block); when the slice cannot
+        be read (a chunk that fails its checksum), the rows are read one by one and each row whose
+        samples cannot be read is recorded in ``faults`` (its samples read as empty)."""
+        try:
+            return _read_block(channel, rows)
+        except LogFormatError:
+            pass
+        ds, _, first, length, _, _ = channel
+        lo = min((int(first[r]) for r in rows if length[r] > 0), default=0)
+        hi = max((int(first[r] + length[r]) for r in rows if length[r] > 0), default=0)
+        out = np.zeros(max(hi - lo, 0))
+        for row in rows:
+            if length[row] == 0:
+                continue
+            try:
+                out[first[row] - lo:first[row] + length[row] - lo] = read_dataset(ds, slice(first[row], first[row] + length[row]))
+            except LogFormatError as error:
+                faults.setdefault(row, f"{error}: point {int(self.index[row])}: samples {int(first[row])} .. "
+                                       f"{int(first[row] + length[row]) - 1} cannot be read")
+        return lo, out
 
     def _record(self, row, scalars, calibration, counters, counter_objects, channels, data) -> PointRecord:
         index = int(self.index[row])
@@ -385,4 +431,14 @@ def _read_block(channel, rows: list[int]) -> tuple[int, np.ndarray]:
         return 0, np.empty(0)
     lo = int(min(first[r] for r in present))
     hi = int(max(first[r] + length[r] for r in present))
-    return lo, ds[lo:hi].astype(np.float64, copy=False)
+    return lo, read_dataset(ds, slice(lo, hi)).astype(np.float64, copy=False)
+
+
+def read_dataset(ds: h5py.Dataset, where: slice | tuple = ()) -> np.ndarray:
+    """``ds[where]``; a read that fails (a chunk failing its checksum, damaged bytes) raises a
+    LogFormatError naming the file, the dataset and the cause."""
+    try:
+        return ds[where]
+    except (OSError, RuntimeError, ValueError, KeyError, TypeError) as error:
+        cause = " ".join(str(error).split())[:160]
+        raise h5format.fail(ds, f"unreadable ({cause})") from None

@@ -10,7 +10,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from rig.errors import LogFormatError, ParameterError
+from rig.errors import LogFormatError, ParameterError, RigError
 from rig.logbook import layout as L
 from rig.logbook.h5format import shown
 
@@ -59,19 +59,43 @@ def open_hdf5(path: object, *, what: str = "friction-rig log") -> Iterator[h5py.
     the file.
     """
     file = as_path("path", path)
+    if file.is_dir():
+        raise LogFormatError(f"{file}: is a folder, not a log file")
     if not file.is_file():
         raise LogFormatError(f"{file}: no such log file")
     try:
         handle = h5py.File(file, "r")
-    except OSError as err:
-        kind = "a truncated or damaged HDF5 file" if h5py.is_hdf5(file) else "not an HDF5 file"
-        raise LogFormatError(f"{file}: {kind} ({err})") from None
+    except (OSError, RuntimeError, KeyError, ValueError) as err:
+        kind = "a truncated or damaged HDF5 file" if _is_hdf5(file) else "not an HDF5 file"
+        raise LogFormatError(f"{file}: {kind} ({cause(err)})") from None
     with handle:
-        check_format(handle, what=what)
         try:
+            check_format(handle, what=what)
             yield handle
-        except (OSError, RuntimeError) as err:
-            raise LogFormatError(f"{file}: damaged HDF5 file, reading failed ({err})") from None
+        except RigError:
+            raise
+        except DAMAGE as err:  # h5py's errors on damaged bytes: OSError, RuntimeError, KeyError, ...
+            raise LogFormatError(f"{file}: damaged HDF5 file, reading failed ({cause(err)})") from None
+
+
+DAMAGE = (OSError, RuntimeError, KeyError, ValueError, TypeError, IndexError, OverflowError, UnicodeDecodeError,
+          AttributeError)
+"""What h5py raises on a file whose bytes are damaged (a checksum, a bad object header or heap, a
+wrong type or size read from the file); never shown as a traceback by a reader."""
+MAX_CAUSE_LENGTH = 160
+
+
+def cause(error: BaseException) -> str:
+    """The library's message of ``error`` on one line, cut to MAX_CAUSE_LENGTH characters."""
+    text = f"{type(error).__name__}: {' '.join(str(error).split())}"
+    return text if len(text) <= MAX_CAUSE_LENGTH else text[:MAX_CAUSE_LENGTH - 3] + "..."
+
+
+def _is_hdf5(file: Path) -> bool:
+    try:
+        return bool(h5py.is_hdf5(file))
+    except Exception:  # noqa: BLE001 - a file h5py cannot even probe is not a readable HDF5 file
+        return False
 
 
 def open_log(path: object) -> contextlib.AbstractContextManager[h5py.File]:

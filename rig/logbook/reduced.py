@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import shutil
 from collections.abc import Mapping
 
 import h5py
@@ -67,14 +66,13 @@ def write_reduced(path: object, table: pd.DataFrame, units: Mapping[str, str] | 
     column_units = _column_units(table, units)
     with open_log(log):
         pass
-    with atomic.new_hdf5(log) as new, h5py.File(log, "r") as old:
+    with atomic.new_hdf5(log, mode_of=log) as new, h5py.File(log, "r") as old:
         for name, value in old.attrs.items():
             new.attrs[name] = value
         for name in old:
             if name != L.REDUCED_GROUP:
                 old.copy(old[name], new, name=name)
         _write_table(new.create_group(L.REDUCED_GROUP), table, column_units)
-        shutil.copymode(log, new.filename)
 
 
 def _write_table(group: h5py.Group, table: pd.DataFrame, units: Mapping[str, str]) -> None:

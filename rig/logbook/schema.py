@@ -8,6 +8,9 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from rig.errors import LogFormatError, ParameterError
+from rig.logbook import h5format
+from rig.logbook import layout as L
+from rig.logbook.opening import is_columnar, open_log
 from rig.logbook.reader import read_metadata, read_points
 from rig.logbook.units import check_name, check_unit
 
@@ -70,3 +73,26 @@ def check_log(path: object, schema: LogSchema | None = None) -> list[int]:
             if name not in present:
                 raise LogFormatError(f"{where}: counter {name!r} is missing (present: {', '.join(present) or 'none'})")
     return indices
+
+
+def check_units(path: object, schema: LogSchema) -> None:
+    """Check the ``units`` attribute of every dataset of a columnar log that ``schema`` names
+    (reading attributes only): a unit other than the schema's raises LogFormatError naming the
+    dataset, the unit found and the unit expected. A dataset the log lacks is left to the
+    per-point checks; a log of format version 1 is checked point by point by check_log."""
+    if not isinstance(schema, LogSchema):
+        raise ParameterError("schema", schema, "a LogSchema")
+    with open_log(path) as handle:
+        if not is_columnar(handle):
+            return
+        points = h5format.subgroup(handle, L.POINTS_GROUP)
+        wanted = [(f"{L.SETTINGS_GROUP}/{name}", unit) for name, unit in schema.settings.items()]
+        wanted += [(f"{L.READINGS_GROUP}/{name}", unit) for name, unit in schema.readings.items()]
+        wanted += [(f"{L.CHANNELS_GROUP}/{name}/{L.SAMPLES_DATASET}", unit) for name, unit in schema.channels.items()]
+        for where, unit in wanted:
+            ds = points.get(where)
+            if ds is None:
+                continue
+            found = h5format.units_of(ds)
+            if found != unit:
+                raise h5format.fail(ds, f"attribute 'units' = {found!r}, expected {unit!r}")

@@ -73,6 +73,9 @@ class LogWriter:
             raise ParameterError("metadata", metadata, "a RunMetadata")
         if not self.path.parent.is_dir():
             raise ParameterError("path", str(self.path), "a file in an existing folder")
+        if self.path.exists() and not self.path.is_file():
+            raise ParameterError("path", str(self.path), "a log file, or a name not yet taken",
+                                 hint="a folder (or another non-file) of that name is in the way; move it")
         self.parts = staging_dir(self.path)
         self._finalized = False
         for leftover in self.path.parent.glob(f".{self.path.name}.*{atomic.TMP_SUFFIX}"):
@@ -107,10 +110,12 @@ class LogWriter:
             raise ParameterError("point.index", point.index, "an index not yet written",
                                  hint=f"done: {sorted(self.done)}")
         frame = journal.encode(journal.entry_of(point, truth))
-        with open(self.parts / JOURNAL, "ab") as handle:
+        with atomic.naming(self.parts / JOURNAL), open(self.parts / JOURNAL, "ab", buffering=0) as handle:
             if handle.tell() != self._end:  # the torn frame of a write that failed half-way
                 handle.truncate(self._end)
-            handle.write(frame)
+            view = memoryview(frame)
+            while view:  # a full disk may take part of the frame before it refuses the rest
+                view = view[handle.write(view):]
             if time.monotonic() - self._synced >= FSYNC_INTERVAL_S:
                 self._sync(handle)
         self._frames[point.index] = journal.Frame(point.index, self._end, len(frame))
@@ -119,7 +124,7 @@ class LogWriter:
     def finalize(self) -> Path:
         """Assemble ``path`` from the journal (atomically), remove the staging folder, return ``path``."""
         self._check_open()
-        with open(self.parts / JOURNAL, "ab") as handle:
+        with atomic.naming(self.parts / JOURNAL), open(self.parts / JOURNAL, "ab") as handle:
             self._sync(handle)
         if self._frames or not self._base:
             with atomic.new_hdf5(self.path, tmp_folder=self.parts) as log:
@@ -165,17 +170,24 @@ class LogWriter:
                 yield journal.entry_of(record, values)
 
     def _finished_points(self) -> dict[int, int]:
-        """{index: row} of a finished columnar log of this same run at ``path`` (else empty)."""
+        """{index: row} of the undamaged points of a finished columnar log of this same run at
+        ``path`` (else empty). Every point is read (its checksums checked): a damaged point is
+        simulated again, and a log damaged as a whole is written anew."""
+        if not self.path.is_file():
+            return {}
         try:
             with open_log(self.path) as handle:
                 if handle.attrs.get(L.ATTR_FORMAT_VERSION) != L.FORMAT_VERSION:
                     return {}
                 if same_run(self.metadata, h5format.read_metadata(handle)) is not None:
                     return {}
-                index = ColumnarLog(handle).index
-        except LogFormatError:  # no log, or a damaged one: written anew
+                log = ColumnarLog(handle)
+                log.quantities(None, L.TRUTH_GROUP)  # the truth is laid out again with the points
+                good = [int(k) for k, record in log.records() if not isinstance(record, LogFormatError)]
+                rows = {int(k): row for row, k in enumerate(log.index)}
+        except (LogFormatError, ParameterError):  # a damaged log: written anew
             return {}
-        return {int(k): row for row, k in enumerate(index)}
+        return {k: rows[k] for k in good}
 
     def _check_open(self) -> None:
         if self._finalized:

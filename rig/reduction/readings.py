@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rig import validate
+from rig.errors import ParameterError
 from rig.reduction.uncertainty import Distribution, InputQuantity
 from sensors.quantisation import noise_std_from_scatter, reading_scatter_variance, step_bias_variance
 
@@ -115,7 +116,16 @@ def scale_mean(readings: np.ndarray, step: float, noise_std: float) -> Measured:
     return Measured(float(np.mean(x)), math.sqrt(scatter / n), math.sqrt(step_bias_variance(step, noise_std)))
 
 
+MAX_SAMPLE = 1e150
+"""Largest |sample| [unit] whose square (the scatter) stays finite in float64 for any count."""
+
+
 def _scatter(x: np.ndarray) -> float:
     """Sample variance s^2 (ddof 1) [unit^2]; exactly 0 when every sample is equal (np.var may
-    leave an ulp of the mean there)."""
+    leave an ulp of the mean there). A non-finite sample, or one whose square overflows (a damaged
+    log's 1e300), raises ParameterError naming the sample and its value (no overflow warning)."""
+    bad = np.flatnonzero(~(np.abs(x) <= MAX_SAMPLE))
+    if bad.size:
+        k = int(bad[0])
+        raise ParameterError(f"samples[{k}]", float(x[k]), f"a finite sample with |x| <= {MAX_SAMPLE:g}")
     return float(np.var(x, ddof=1)) if x.size > 1 and np.ptp(x) > 0.0 else 0.0

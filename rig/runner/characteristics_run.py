@@ -1,7 +1,8 @@
 """A contact-characteristics scene: nu_T, nu_v, nu_0 versus alpha' with rig.characteristics (no stand).
 
 Outputs in the folder: characteristics.csv (one row per case, model and alpha'),
-characteristics.png (the models overlaid, one row of panels per case) and summary.txt.
+characteristics.png (the models overlaid, one row of panels per case) and summary.txt. One
+writer per folder (its lock), and never into the folder of another kind of run.
 """
 
 from __future__ import annotations
@@ -11,17 +12,26 @@ from pathlib import Path
 from tqdm import tqdm
 
 from rig.characteristics import plot, sweep
+from rig.logbook.atomic import naming
 from rig.runner.outputs import CHARACTERISTICS_CSV as CSV_NAME
 from rig.runner.outputs import CHARACTERISTICS_FIGURE as FIGURE_NAME
-from rig.runner.outputs import SUMMARY_NAME, output_folder, staged_outputs
+from rig.runner.folder_lock import folder_lock
+from rig.runner.outputs import CHARACTERISTICS_KIND, SUMMARY_NAME, claim_folder, output_folder, staged_outputs
 from rig.runner.stand_run import RunReport
 from rig.runner.sweep import show_progress
 from rig.scenes.characteristics_scene import CharacteristicsScene
 
 
 def run_characteristics_scene(scene: CharacteristicsScene, out_dir: Path, *, progress: bool | None = None) -> RunReport:
-    """Evaluate every model over the scene's cases and alpha' values; write the outputs into ``out_dir``."""
+    """Evaluate every model over the scene's cases and alpha' values; write the outputs into ``out_dir``
+    (holding its lock, rig.runner.folder_lock; a folder of another kind of run is refused)."""
     out_dir = output_folder(out_dir)
+    with folder_lock(out_dir, f"rig run {scene.name}"):
+        claim_folder(out_dir, CHARACTERISTICS_KIND)
+        return _run_locked(scene, out_dir, progress)
+
+
+def _run_locked(scene: CharacteristicsScene, out_dir: Path, progress: bool | None) -> RunReport:
     total = len(scene.cases) * (len(scene.models) + len(scene.variants)) * len(scene.alphas)
     with tqdm(total=total, desc=f"scene {scene.name}", disable=not show_progress(progress)) as bar:
         table = sweep(scene.cases, scene.models, scene.alphas, poisson=scene.poisson, n=scene.n,
@@ -39,7 +49,8 @@ def _write_outputs(scene: CharacteristicsScene, table, total: int, staging: Path
     """Write the CSV, the figure and summary.txt into ``staging``; returns the summary text."""
     table.to_csv(staging / CSV_NAME, index=False)
     if scene.outputs.figures:
-        plot(table, staging / FIGURE_NAME, f"{scene.description} (poisson {scene.poisson:g})")
+        with naming(staging.parent / FIGURE_NAME):
+            plot(table, staging / FIGURE_NAME, f"{scene.description} (poisson {scene.poisson:g})")
     files = _files(scene)
     text = "\n".join([
         "friction-rig run summary",

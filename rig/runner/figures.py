@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from rig.logbook.atomic import naming
 from rig.logbook.units import safe_unit
 from rig.scenes.procedure import PlannedPoint, Procedure
 
@@ -69,7 +70,8 @@ def reduced_vs_truth_figure(table: pd.DataFrame, plan: Sequence[PlannedPoint], p
     fig = draw_reduced_vs_truth(table, plan, procedure, title)
     if fig is None:
         return None
-    fig.savefig(path, dpi=110)
+    with naming(path):  # a full disk: the error names the figure (the image library removes it)
+        fig.savefig(path, dpi=110)
     return path
 
 

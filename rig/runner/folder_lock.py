@@ -73,8 +73,9 @@ def folder_lock(folder: Path, what: str) -> Iterator[Path]:
             break
         os.close(fd)
     try:
-        os.ftruncate(fd, 0)
-        os.pwrite(fd, f"process {os.getpid()} ({what}, started {utc_timestamp()})\n".encode(), 0)
+        with contextlib.suppress(OSError):  # who holds it: only quoted (a full disk may refuse it)
+            os.ftruncate(fd, 0)
+            os.pwrite(fd, f"process {os.getpid()} ({what}, started {utc_timestamp()})\n".encode(), 0)
         yield path
     finally:
         with contextlib.suppress(OSError):

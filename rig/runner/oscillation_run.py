@@ -13,10 +13,12 @@ from pathlib import Path
 import pandas as pd
 from tqdm import tqdm
 
+from rig.logbook.atomic import naming
 from rig.oscillation import amplitude_sweep, cycle_work, plateau_onset, plot_sweep, plot_work_map
 from rig.runner.outputs import OSCILLATION_CSV as CSV_NAME
 from rig.runner.outputs import OSCILLATION_FIGURE as SWEEP_FIGURE
-from rig.runner.outputs import SUMMARY_NAME, output_folder, staged_outputs
+from rig.runner.folder_lock import folder_lock
+from rig.runner.outputs import OSCILLATION_KIND, SUMMARY_NAME, claim_folder, output_folder, staged_outputs
 from rig.runner.outputs import WORK_MAP_FIGURE as MAP_FIGURE
 from rig.runner.stand_run import RunReport
 from rig.runner.sweep import show_progress
@@ -26,7 +28,15 @@ FILES = (CSV_NAME, SWEEP_FIGURE, MAP_FIGURE, SUMMARY_NAME)
 
 
 def run_oscillation_scene(scene: OscillationScene, out_dir: Path, *, progress: bool | None = None) -> RunReport:
+    """Run the sweep and write the outputs into ``out_dir`` (holding its lock, rig.runner.folder_lock;
+    a folder of another kind of run is refused)."""
     out_dir = output_folder(out_dir)
+    with folder_lock(out_dir, f"rig run {scene.name}"):
+        claim_folder(out_dir, OSCILLATION_KIND)
+        return _run_locked(scene, out_dir, progress)
+
+
+def _run_locked(scene: OscillationScene, out_dir: Path, progress: bool | None) -> RunReport:
     total = len(scene.contacts) * len(scene.stroke_ratios)
     tables = []
     with tqdm(total=total, desc=f"scene {scene.name}", disable=not show_progress(progress)) as bar:
@@ -39,8 +49,10 @@ def run_oscillation_scene(scene: OscillationScene, out_dir: Path, *, progress: b
     work = cycle_work(first, scene.map_stroke_ratio, scene.n)
     with staged_outputs(out_dir, replace_previous=True) as staging:
         pd.concat(tables, ignore_index=True).to_csv(staging / CSV_NAME, index=False)
-        plot_sweep(tables[0], staging / SWEEP_FIGURE, f"{scene.description}\n{first.label}, n = {scene.n}")
-        plot_work_map(work, staging / MAP_FIGURE, f"{first.label}, e = {scene.map_stroke_ratio:g}")
+        with naming(out_dir / SWEEP_FIGURE):
+            plot_sweep(tables[0], staging / SWEEP_FIGURE, f"{scene.description}\n{first.label}, n = {scene.n}")
+        with naming(out_dir / MAP_FIGURE):
+            plot_work_map(work, staging / MAP_FIGURE, f"{first.label}, e = {scene.map_stroke_ratio:g}")
         text = _summary(scene, tables)
         (staging / SUMMARY_NAME).write_text(text, encoding="utf-8")
     return RunReport(out_dir, FILES, total, total, 0, (), False, text)

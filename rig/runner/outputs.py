@@ -5,6 +5,8 @@ staging folder ``.outputs.tmp/`` inside the output folder; when all are written 
 fsynced and moved into the output folder with ``os.replace`` (atomic), summary.txt last. Before a
 run replaces its log, the outputs of the previous run (every name of OUTPUT_NAMES in the folder)
 are removed, summary.txt first, so that no output stays beside a log it does not describe.
+A write that fails (a full disk) raises an OSError naming the output and the cause; the
+staging folder is removed and the previous outputs stay.
 
 A kill at any moment therefore leaves every output file either absent or complete (never
 truncated), and a summary.txt only beside the outputs of the log it describes: while the new
@@ -21,8 +23,8 @@ import shutil
 from collections.abc import Iterator
 from pathlib import Path
 
-from rig.errors import ParameterError
-from rig.logbook.atomic import fsync_dir, fsync_file
+from rig.errors import ParameterError, RigError
+from rig.logbook.atomic import fsync_dir, fsync_file, write_error
 from rig.scenes.stand_scene import PAPER_FIGURE_NAMES
 
 STAGING_NAME = ".outputs.tmp"
@@ -38,6 +40,31 @@ WORK_MAP_FIGURE = "work_map.png"
 OUTPUT_NAMES = (SUMMARY_NAME, REDUCED_CSV, REDUCED_FIGURE, CHARACTERISTICS_CSV, CHARACTERISTICS_FIGURE,
                 OSCILLATION_CSV, OSCILLATION_FIGURE, WORK_MAP_FIGURE, *(f"{name}.png" for name in PAPER_FIGURE_NAMES))
 """Every file a run may write besides its log (summary.txt first: it is removed first, renamed last)."""
+
+
+STAND_KIND, CHARACTERISTICS_KIND, OSCILLATION_KIND = "stand", "contact-characteristics", "oscillation"
+RUN_MARKS = {
+    STAND_KIND: ("log.h5", "log.h5.parts", REDUCED_CSV),
+    CHARACTERISTICS_KIND: (CHARACTERISTICS_CSV,),
+    OSCILLATION_KIND: (OSCILLATION_CSV,),
+}
+"""The files that show which kind of run a folder holds."""
+
+
+class ForeignOutputsError(RigError):
+    """The output folder holds another kind of run's outputs (which this run would delete)."""
+
+
+def claim_folder(out_dir: Path, kind: str) -> None:
+    """Refuse, by name, a folder holding the outputs of another kind of run than ``kind`` (one of
+    RUN_MARKS): a run replaces the previous outputs of its folder and must not delete another
+    kind's. Call it with the folder's lock held (rig.runner.folder_lock)."""
+    for other, marks in RUN_MARKS.items():
+        found = [name for name in marks if (out_dir / name).exists()]
+        if other != kind and found:
+            raise ForeignOutputsError(
+                f"{out_dir} holds the outputs of a {other} run ({', '.join(found)}); a {kind} run there would "
+                "replace them: choose another output folder")
 
 
 def output_folder(out_dir: object) -> Path:
@@ -61,6 +88,12 @@ def remove_stale(out_dir: Path) -> None:
     fsync_dir(out_dir)
 
 
+def _being_written(staging: Path) -> str:
+    """Name of the file last written in ``staging`` (the one a failed write was writing), else the folder's."""
+    files = [(p.stat().st_mtime_ns, p.name) for p in staging.iterdir() if p.is_file()]
+    return max(files)[1] if files else staging.name
+
+
 @contextlib.contextmanager
 def staged_outputs(out_dir: Path, *, replace_previous: bool = False) -> Iterator[Path]:
     """Yield the staging folder to write outputs into; when the block ends without an error, move
@@ -74,7 +107,14 @@ def staged_outputs(out_dir: Path, *, replace_previous: bool = False) -> Iterator
         raise ParameterError("output folder", str(out_dir), "a folder this user can write",
                              hint=error.strerror or str(error)) from None
     try:
-        yield staging
+        try:
+            yield staging
+        except OSError as error:  # a full disk while an output was written: name that output
+            if error.filename is None:
+                raise write_error(out_dir / _being_written(staging), error) from None
+            if Path(error.filename).parent == staging:  # named where it will be, not where it was staged
+                raise write_error(out_dir / Path(error.filename).name, error) from None
+            raise
         names = sorted((p.name for p in staging.iterdir() if p.is_file()), key=lambda name: name == SUMMARY_NAME)
         for name in names:
             fsync_file(staging / name)

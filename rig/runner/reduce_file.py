@@ -15,6 +15,7 @@ from pathlib import Path
 
 from rig.errors import LogFormatError, ParameterError
 from rig.logbook import point_indices, read_metadata
+from rig.logbook.schema import check_units
 from rig.runner.figures import reduced_vs_truth_figure
 from rig.runner.folder_lock import FolderLockedError, folder_lock
 from rig.runner.outputs import REDUCED_FIGURE, output_folder, staged_outputs
@@ -49,9 +50,14 @@ def _reduce(log_path: Path, out_dir: Path | None, **parse_options) -> tuple[Redu
                         **parse_options)
     if not isinstance(scene, StandScene):
         raise ParameterError("log", str(log_path), "the log of a stand run (its scene has no stand)")
+    if metadata.stand != scene.stand:
+        raise LogFormatError(f"{log_path}: root attribute 'stand' = {metadata.stand!r}, but the scene stored in the "
+                             f"log runs stand {scene.stand!r}")
+    stand = scene.build_stand()
+    check_units(log_path, stand.LOG_SCHEMA)  # a reading in other units than the stand's is refused by name
     out_dir = output_folder(log_path.parent if out_dir is None else out_dir)
     with staged_outputs(out_dir) as staging:
-        reduction = reduce_to_files(scene.build_stand(), log_path, scene.contact, staging)
+        reduction = reduce_to_files(stand, log_path, scene.contact, staging)
         names = [reduction.csv.name]
         if scene.outputs.figures:
             figure = reduced_vs_truth_figure(reduction.table, scene.procedure.points(), scene.procedure,

@@ -18,6 +18,7 @@ import pandas as pd
 
 from rig.errors import LogFormatError, ParameterError, RigError
 from rig.logbook import write_reduced
+from rig.logbook.atomic import WRITE_FAILURES
 from rig.logbook.truth import read_truth
 from rig.logbook.units import DIMENSIONLESS
 from rig.reduction.table import DAMAGED
@@ -101,5 +102,7 @@ def reduce_to_files(stand: Stand, log_path: Path, contact: ContactSpec, out_dir:
     try:
         write_reduced(log_path, table)
     except (ParameterError, OSError) as error:  # e.g. a read-only log: reported; reduced.csv holds the table
+        if isinstance(error, OSError) and error.errno in WRITE_FAILURES:
+            raise  # a full disk: the run stops with that error
         return Reduction(table, csv, False, f"reduced table not stored in {log_path.name}: {error}", damaged, notes)
     return Reduction(table, csv, True, None, damaged, notes)

@@ -28,7 +28,7 @@ from rig.logbook import LogWriter, RunMetadata, point_indices, read_point, utc_t
 from rig.runner.dask_pool import check_scheduler
 from rig.runner.figures import reduced_vs_truth_figure
 from rig.runner.folder_lock import folder_lock
-from rig.runner.outputs import REDUCED_FIGURE, SUMMARY_NAME, output_folder, remove_stale, staged_outputs
+from rig.runner.outputs import REDUCED_FIGURE, STAND_KIND, SUMMARY_NAME, claim_folder, output_folder, remove_stale, staged_outputs
 from rig.runner.pool import WorkerError
 from rig.runner.reduction import Reduction, read_truth_if_any, reduce_to_files
 from rig.runner.summary import RunFacts, summary_text
@@ -76,6 +76,7 @@ def run_stand_scene(scene: StandScene, out_dir: Path, *, jobs: int = 1, schedule
         scheduler = check_scheduler(scheduler, jobs)
     out_dir = output_folder(out_dir)
     with folder_lock(out_dir, f"rig run {scene.name}"):
+        claim_folder(out_dir, STAND_KIND)  # a characteristics or oscillation run's folder is refused
         return _run_locked(scene, out_dir, jobs, scheduler, progress)
 
 

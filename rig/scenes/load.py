@@ -72,7 +72,7 @@ def load_scene(name_or_path: str | Path, *, stand_class_of=_stand_class) -> Scen
     """Read and validate a built-in scene by name (``"default"``) or a scene file by path."""
     path = resolve_scene(name_or_path)
     try:
-        text = path.read_text(encoding="utf-8")
+        text = path.read_text(encoding="utf-8-sig")  # a byte-order mark (some editors save one) is dropped
     except (OSError, UnicodeDecodeError) as error:
         raise ParameterError("scene file", str(path), "a readable UTF-8 TOML file", hint=str(error)) from None
     return parse_scene(text, name=path.stem, source=str(path), stand_class_of=stand_class_of)

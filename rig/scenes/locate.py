@@ -43,7 +43,7 @@ def scenes_dir() -> Path:
 def _description(path: Path) -> str:
     """``[scene] description`` of a scene file, read without validating the rest."""
     try:
-        head = tomllib.loads(path.read_text(encoding="utf-8")).get("scene", {})
+        head = tomllib.loads(path.read_text(encoding="utf-8-sig")).get("scene", {})
     except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as error:
         return f"(unreadable scene file: {error})"
     description = head.get("description") if isinstance(head, dict) else None

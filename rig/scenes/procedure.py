@@ -173,14 +173,21 @@ def _series(common: dict[str, float], fixed: dict[str, float], sweep, specs, whe
     return Series(fixed, sweep)
 
 
-def parse_procedure(table: Mapping[str, object], settings_specs: Mapping[str, object]) -> Procedure:
-    """Validate the ``[procedure]`` table against the stand's SETTINGS {name: SettingSpec}."""
+def parse_procedure(table: Mapping[str, object], settings_specs: Mapping[str, object], *,
+                    max_gate_time_s: float | None = None, gate_limit: str = "") -> Procedure:
+    """Validate the ``[procedure]`` table against the stand's SETTINGS {name: SettingSpec};
+    ``max_gate_time_s`` [s]: the longest gate the stand can record (``gate_limit`` says why), so
+    that the range an error states is the range enforced."""
     T.check_keys(table, KEYS, WHERE)
     timeout = T.number(T.dotted(WHERE, "settle_timeout_s"),
                        T.required(table, "settle_timeout_s", WHERE, "a number in (0, inf) s"), 0.0, None, "s",
                        lo_open=True)
-    gate = T.number(T.dotted(WHERE, "gate_time_s"),
-                    T.required(table, "gate_time_s", WHERE, "a number in (0, inf) s"), 0.0, None, "s", lo_open=True)
+    gate_range = f"(0, {'inf)' if max_gate_time_s is None else f'{max_gate_time_s:g}]'} s"
+    given_gate = T.required(table, "gate_time_s", WHERE, f"a number in {gate_range}")
+    try:
+        gate = T.number(T.dotted(WHERE, "gate_time_s"), given_gate, 0.0, max_gate_time_s, "s", lo_open=True)
+    except ParameterError as error:
+        raise ParameterError(error.name, error.value, f"{gate_range}{f': {gate_limit}' if gate_limit else ''}") from None
     repeats = validate.integer(T.dotted(WHERE, "repeats"), table.get("repeats", 1), 1, MAX_POINTS)
     policy = T.member(TimeoutPolicy, table.get("on_settle_timeout", TimeoutPolicy.SKIP.value),
                       T.dotted(WHERE, "on_settle_timeout"))

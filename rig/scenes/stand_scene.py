@@ -134,8 +134,9 @@ def parse_stand_scene(document: Mapping[str, object], *, name: str, source: str,
                      "scene.drive")
     parameters = parse_parameters(T.sub_table(document, "parameters", "", required=False) or {},
                                   stand_class.PARAMETERS)
-    procedure = parse_procedure(T.sub_table(document, "procedure", "", required=True), stand_class.SETTINGS)
-    check_gate(procedure.gate_time_s, stand_class.gate_sample_rate_Hz(parameters))
+    rate_Hz = stand_class.gate_sample_rate_Hz(parameters)
+    procedure = parse_procedure(T.sub_table(document, "procedure", "", required=True), stand_class.SETTINGS,
+                                **gate_limit(rate_Hz))
     return StandScene(
         name=name,
         description=T.text(head, "description", "scene"),
@@ -153,9 +154,11 @@ def parse_stand_scene(document: Mapping[str, object], *, name: str, source: str,
     )
 
 
-def check_gate(gate_time_s: float, rate_Hz: float) -> None:
-    """The gate must fit the recorder: at most MAX_GATE_SAMPLES samples per channel at ``rate_Hz``."""
-    if rate_Hz > 0.0 and gate_time_s * rate_Hz > MAX_GATE_SAMPLES:
-        raise ParameterError("procedure.gate_time_s", gate_time_s,
-                             f"(0, {MAX_GATE_SAMPLES / rate_Hz:g}] s: at most {MAX_GATE_SAMPLES} samples per "
-                             f"channel at {rate_Hz:g} Hz, what the simulated recorder holds")
+def gate_limit(rate_Hz: float) -> dict[str, object]:
+    """The longest gate [s] the recorder holds at ``rate_Hz`` (at most MAX_GATE_SAMPLES samples per
+    channel) and why, as parse_procedure's keywords (none at a rate of 0)."""
+    if not rate_Hz > 0.0:
+        return {}
+    return {"max_gate_time_s": MAX_GATE_SAMPLES / rate_Hz,
+            "gate_limit": f"at most {MAX_GATE_SAMPLES} samples per channel at {rate_Hz:g} Hz, what the simulated "
+                          "recorder holds"}

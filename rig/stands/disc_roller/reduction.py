@@ -25,8 +25,9 @@ import numpy as np
 import pandas as pd
 
 from rig.contact.surrogate import TableDomain
-from rig.errors import LogFormatError
+from rig.errors import LogFormatError, ParameterError
 from rig.logbook import PointRecord, read_points
+from rig.logbook.damage import damage_reason
 from rig.reduction import stand_b
 from rig.reduction.iteration import ReductionSettings
 from rig.reduction.readings import Measured, converter_mean
@@ -99,8 +100,8 @@ def reduce_log(
             if isinstance(record, LogFormatError):
                 raise record
             readings = point_readings(record, params, f"point {index}")
-        except LogFormatError as error:  # a damaged point: NaN with the reason, the others go on
-            damaged[index] = str(error)
+        except (LogFormatError, ParameterError) as error:  # a damaged point: NaN with the reason, the others go on
+            damaged[index] = damage_reason(path, index, error, None if isinstance(record, LogFormatError) else record)
             continue
         law = LawCoefficients(law_for(readings.b_over_a), domain_for(readings.b_over_a))
         points.append(stand_b.reduce(readings, law, params.geometry, settings))

@@ -35,8 +35,9 @@ from collections.abc import Callable
 import numpy as np
 import pandas as pd
 
-from rig.errors import LogFormatError
+from rig.errors import LogFormatError, ParameterError
 from rig.logbook import PointRecord, read_points
+from rig.logbook.damage import damage_reason
 from rig.logbook.truth import read_truth
 from rig.reduction import stand_a
 from rig.reduction.geometry import StandAGeometry
@@ -142,8 +143,8 @@ def reduce_log(path, params: YokeParameters, law_for: LawFor,
             geometry = params.geometry_at(_quantity(record.settings, "delta_h", where))
             readings = point_readings(record, params, geometry, where)
             drift_recorded &= all(name in record.readings for name in ZERO_DRIFT_READINGS)
-        except LogFormatError as error:  # a damaged point: NaN with the reason, the others go on
-            damaged[index] = str(error)
+        except (LogFormatError, ParameterError) as error:  # a damaged point: NaN with the reason, the others go on
+            damaged[index] = damage_reason(path, index, error, None if isinstance(record, LogFormatError) else record)
             continue
         law, domain = law_for(readings.b_over_a, geometry)
         points.append(stand_a.reduce(readings, LawCoefficients(law, domain), geometry, settings))
