@@ -24,6 +24,7 @@ import rig.runner.dask_pool
 import rig.stands
 from rig.errors import ParameterError
 from rig.logbook import LogWriter, RunMetadata, utc_timestamp
+from rig.logbook.shards import find_shards, shard_folder
 from rig.runner import run_scene
 from rig.runner.pool import WorkerError
 from rig.scenes import load_scene, parse_scene
@@ -150,8 +151,9 @@ def test_an_error_in_a_point_comes_back_naming_the_point(scheduler, tmp_path):
     scene = parse_scene(scene_text(NO_FIGURES | {'stand = "fake"': 'stand = "broken"'}), name="broken")
     with pytest.raises(WorkerError, match=r"(?s)point 1 \{'load_N': 10\.0.*RuntimeError: stand bug at point 1"):
         run_scene(scene, tmp_path / "run", scheduler=scheduler, progress=False)
-    resumed = LogWriter(tmp_path / "run" / "log.h5", RunMetadata(scene.text, scene.seed, scene.stand, utc_timestamp()))
-    assert resumed.done == {0}  # point 0 was written before the error: running again resumes
+    metadata = RunMetadata(scene.text, scene.seed, scene.stand, utc_timestamp())
+    shards = find_shards(shard_folder(tmp_path / "run" / "log.h5"), metadata)
+    assert [shard.indices for shard in shards] == [(0,)]  # point 0 was logged before the error: running again resumes
 
 
 class _Done:
@@ -183,7 +185,7 @@ class _ClientLosingPoint1:
         return value
 
     def submit(self, function, *args, key):
-        return _Lost() if any(point.index == 1 for point in args[-1]) else _Done(function(*args))
+        return _Lost() if any(point.index == 1 for point in args[-1].points) else _Done(function(*args))
 
     def cancel(self, futures):
         self.cancelled = list(futures)
