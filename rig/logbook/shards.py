@@ -165,24 +165,66 @@ def _channel_of(path: str) -> str | None:
     return None
 
 
+@dataclass
+class LogColumns:
+    """What a columnar log holds besides its samples, read in one pass (:func:`read_columns`): its
+    number of points, every group of ``/points`` and ``/truth`` with its attributes, every per-point
+    dataset (dtype, attributes, filters, rows) and every channel's samples dataset (dtype,
+    attributes, filters). A worker reads its shard's columns and sends them with the shard, so that
+    the merge does not open every dataset of every shard again."""
+
+    n: int
+    groups: dict[str, dict]
+    columns: dict[str, tuple[np.dtype, dict, dict, np.ndarray]]
+    samples: dict[str, tuple[np.dtype, dict, dict]]
+
+
+def read_columns(path: Path) -> LogColumns:
+    """The columns of the columnar log ``path`` (see LogColumns)."""
+    with open_log(path) as handle:
+        check_format(handle)
+        n = handle[f"{L.POINTS_GROUP}/{L.INDEX_DATASET}"].shape[0]
+        found = LogColumns(n, {}, {}, {})
+
+        def visit(name: str, obj) -> None:
+            if isinstance(obj, h5py.Group):
+                found.groups[name] = dict(obj.attrs)
+            elif name.endswith("/" + L.SAMPLES_DATASET) and _channel_of(name) is not None:
+                found.samples[name] = (obj.dtype, dict(obj.attrs), _filters(obj))
+            elif obj.ndim != 1 or obj.shape[0] != n:
+                raise h5format.fail(obj, f"expected one row per point ({n}), found shape {obj.shape}")
+            else:
+                found.columns[name] = (obj.dtype, dict(obj.attrs), _filters(obj), obj[()])
+
+        for root in (L.POINTS_GROUP, L.TRUTH_GROUP):
+            group = h5format.subgroup(handle, root)
+            visit(root, group)
+            group.visititems(lambda name, obj, root=root: visit(f"{root}/{name}", obj))
+    return found
+
+
 class _Plan:
     """What the sources hold (the first pass): every group, every per-point column with each
     source's rows, every channel's samples dataset, and the rows' index order."""
 
-    def __init__(self, sources: Sequence[Path]) -> None:
+    def __init__(self, sources: Sequence[LogColumns]) -> None:
         self.groups: dict[str, dict] = {}
         self.columns: dict[str, _Column] = {}
         self.samples: dict[str, tuple[np.dtype, dict, dict]] = {}
-        self.sizes: list[int] = []
+        self.sizes = [source.n for source in sources]
         for number, source in enumerate(sources):
-            with open_log(source) as handle:
-                check_format(handle)
-                n = handle[f"{L.POINTS_GROUP}/{L.INDEX_DATASET}"].shape[0]
-                self.sizes.append(n)
-                for root in (L.POINTS_GROUP, L.TRUTH_GROUP):
-                    group = h5format.subgroup(handle, root)
-                    self._group(root, group)
-                    group.visititems(lambda name, obj, root=root: self._visit(f"{root}/{name}", obj, number, n))
+            for path, attrs in source.groups.items():
+                self.groups.setdefault(path, attrs)
+            for path, (dtype, attrs, filters) in source.samples.items():
+                known = self.samples.setdefault(path, (dtype, attrs, filters))
+                _same_units(path, known[1], attrs)
+            for path, (dtype, attrs, filters, rows) in source.columns.items():
+                column = self.columns.get(path)
+                if column is None:
+                    column = self.columns[path] = _Column(dtype, attrs, filters, [])
+                _same_units(path, column.attrs, attrs)
+                column.rows += [None] * (number - len(column.rows))
+                column.rows.append(rows)
         for column in self.columns.values():
             column.rows += [None] * (len(sources) - len(column.rows))
         self.index = self._concatenated(f"{L.POINTS_GROUP}/{L.INDEX_DATASET}")
@@ -190,32 +232,6 @@ class _Plan:
         self.index = self.index[self.order]
         if np.any(np.diff(self.index) <= 0):
             raise ParameterError("sources", f"{len(sources)} logs", "logs holding different points (a point is in two)")
-
-    def _group(self, path: str, group: h5py.Group) -> None:
-        self.groups.setdefault(path, dict(group.attrs))
-
-    def _visit(self, path: str, obj, number: int, n: int) -> None:
-        if isinstance(obj, h5py.Group):
-            self._group(path, obj)
-            return
-        if path.endswith("/" + L.SAMPLES_DATASET) and _channel_of(path) is not None:
-            known = self.samples.setdefault(path, (obj.dtype, dict(obj.attrs), _filters(obj)))
-            self._same_units(path, known[1], obj)
-            return
-        if obj.ndim != 1 or obj.shape[0] != n:
-            raise h5format.fail(obj, f"expected one row per point ({n}), found shape {obj.shape}")
-        column = self.columns.get(path)
-        if column is None:
-            column = self.columns[path] = _Column(obj.dtype, dict(obj.attrs), _filters(obj), [])
-        self._same_units(path, column.attrs, obj)
-        column.rows += [None] * (number - len(column.rows))
-        column.rows.append(obj[()])
-
-    @staticmethod
-    def _same_units(path: str, attrs: dict, obj: h5py.Dataset) -> None:
-        unit, other = attrs.get(L.ATTR_UNITS), obj.attrs.get(L.ATTR_UNITS)
-        if unit != other:
-            raise ParameterError(f"{path}.units", other, f"{unit!r}, the unit of the earlier points (one unit per quantity)")
 
     def _concatenated(self, path: str) -> np.ndarray:
         column = self.columns[path]
@@ -234,17 +250,26 @@ class _Plan:
         return source[self.order], local[self.order]
 
 
-def merge_logs(target: Path, metadata: RunMetadata, sources: Sequence[Path], *, tmp_folder: Path | None = None) -> Path:
+def _same_units(path: str, known: dict, attrs: dict) -> None:
+    unit, other = known.get(L.ATTR_UNITS), attrs.get(L.ATTR_UNITS)
+    if unit != other:
+        raise ParameterError(f"{path}.units", other, f"{unit!r}, the unit of the earlier points (one unit per quantity)")
+
+
+def merge_logs(target: Path, metadata: RunMetadata, sources: Sequence[Path], *, tmp_folder: Path | None = None,
+               columns: Sequence[LogColumns | None] | None = None) -> Path:
     """Write the points of the columnar logs ``sources`` (disjoint sets of points of the run
     ``metadata``) as one columnar log ``target``, atomically; returns ``target``.
 
     The result holds what a run writing the same points one by one holds (rig.logbook.writer);
     a ``/reduced`` table of a source is not carried over. ``tmp_folder``: where the temporary
-    file is written (default: the target's folder; same file system).
+    file is written (default: the target's folder; same file system). ``columns``: the sources'
+    columns where already read (read_columns; None: read here).
     """
     if not sources:
         raise ParameterError("sources", "none", "at least one log")
-    plan = _Plan(sources)
+    given = list(columns) if columns is not None else [None] * len(sources)
+    plan = _Plan([read_columns(path) if known is None else known for path, known in zip(sources, given)])
     with atomic.new_hdf5(Path(target), tmp_folder=tmp_folder) as out:
         h5format.write_metadata(out, metadata)
         for path in sorted(plan.groups):
@@ -306,11 +331,13 @@ def _copy_samples(out: h5py.File, plan: _Plan, sources: Sequence[Path], lengths:
             continue
         with open_log(path) as handle:
             for channel, (samples_path, ds, at) in targets.items():
-                if samples_path not in handle:
+                group_path = samples_path.rsplit("/", 1)[0]
+                first = plan.columns.get(f"{group_path}/{L.FIRST_SAMPLE_DATASET}")
+                if first is None or first.rows[number] is None:
                     continue
                 src = handle[samples_path]
-                group = src.parent
-                first, length = group[L.FIRST_SAMPLE_DATASET][()], group[L.SAMPLE_COUNT_DATASET][()]
+                first = first.rows[number]
+                length = plan.columns[f"{group_path}/{L.SAMPLE_COUNT_DATASET}"].rows[number]
                 for _, start, end in mine:
                     rows = local[start:end]
                     count = int(length[rows].sum())

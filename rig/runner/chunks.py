@@ -31,7 +31,7 @@ from rig.errors import ParameterError
 from rig.logbook import Quantity, RunMetadata
 from rig.logbook import journal
 from rig.logbook.content import PointRecord, quantities
-from rig.logbook.shards import write_shard
+from rig.logbook.shards import LogColumns, read_columns, write_shard
 from rig.runner.operator import PointResult, run_operator
 from rig.runner.pool import PointFailure
 from rig.scenes.procedure import PlannedPoint, TimeoutPolicy
@@ -41,8 +41,9 @@ from rig.stands.base import Stand
 SETTLE_TRUTH = "operator_settle_time"
 """Truth entry the operator adds to every point: settle time [s]."""
 
-MAX_CHUNK = 256
-"""Most points in one chunk [1]: a shard of ~0.5 MB, a few seconds of a worker's time."""
+MAX_CHUNK = 512
+"""Most points in one chunk [1]: a shard of ~1 MB, a few seconds of a worker's time (the parent's
+cost of a shard, storing and merging it, is a few tens of ms whatever its size)."""
 
 CHUNKS_PER_WORKER = 8
 """Chunks per worker [1]: enough for the workers to share the points evenly to the end."""
@@ -86,8 +87,9 @@ class ChunkResult:
     written: indices logged in the shard; failures: (index, settings, message) of the points that
     did not settle; stopped: a point did not settle under the STOP policy (the chunk ends there);
     error: a point raised (the chunk ends there); shard: the shard file's bytes (None: no point
-    written, or a ReduceTask); table: the reduced rows (None when not reduced); cpu_s: the worker's
-    CPU time for the task [s].
+    written, or a ReduceTask) and columns, its per-point columns (rig.logbook.shards.read_columns,
+    read here so that the parent's merge need not); table: the reduced rows (None when not
+    reduced); cpu_s: the worker's CPU time for the task [s].
     """
 
     first: int
@@ -98,6 +100,7 @@ class ChunkResult:
     shard: bytes | None
     table: pd.DataFrame | None
     cpu_s: float
+    columns: LogColumns | None = None
 
 
 def run_task(stand: Stand, scene: StandScene, task: SimulateTask | ReduceTask) -> ChunkResult:
@@ -127,14 +130,14 @@ def run_task(stand: Stand, scene: StandScene, task: SimulateTask | ReduceTask) -
             error = PointFailure.of(result.point, raised)
             break
     stopped = error is None and _stops(scene) and bool(finished) and finished[-1].outcome is None
-    shard = table = None
+    shard = table = columns = None
     if entries:  # the points before an error too: a rerun resumes after them
         with _scratch() as path:
             write_shard(path, task.metadata, entries)
             table = _reduce(stand, scene, path) if task.reduce and error is None else None
-            shard = path.read_bytes()
+            shard, columns = path.read_bytes(), read_columns(path)
     return ChunkResult(task.points[0].index, tuple(e.index for e in entries), tuple(failures), stopped, error,
-                       shard, table, time.process_time() - start)
+                       shard, table, time.process_time() - start, columns)
 
 
 def failed(task: SimulateTask | ReduceTask, error: Exception) -> ChunkResult:

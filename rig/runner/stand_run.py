@@ -170,7 +170,8 @@ def _finalize(writer: LogWriter, log_path: Path, earlier: list[Shard], sweep: Sh
         merge_logs(log_path, writer.metadata, [log_path, *sources], tmp_folder=log_path.parent)
         remove_shards(folder)
         return None
-    merge_logs(log_path, writer.metadata, sources, tmp_folder=staging_dir(log_path))
+    merge_logs(log_path, writer.metadata, sources, tmp_folder=staging_dir(log_path),
+               columns=[sweep.columns.get(shard.indices[0]) for shard in shards])
     _discard(writer, log_path)
     return gathered_table([sweep.tables.get(shard.indices[0]) for shard in shards])
 

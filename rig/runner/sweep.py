@@ -24,7 +24,7 @@ from tqdm import tqdm
 
 from rig.errors import ParameterError
 from rig.logbook import LogWriter, RunMetadata
-from rig.logbook.shards import Shard, store_shard
+from rig.logbook.shards import LogColumns, Shard, store_shard
 from rig.runner.chunks import SETTLE_TRUTH, ChunkResult, ReduceTask, logged_truth, run_task, simulate_tasks
 from rig.runner.dask_pool import run_dask, run_dask_tasks
 from rig.runner.operator import PointResult, run_operator
@@ -97,10 +97,12 @@ def run_sweep(scene: StandScene, stand: Stand | None, points: Sequence[PlannedPo
 class ShardedSweep(SweepResult):
     """A sweep whose points were logged in shards (rig.runner.chunks): besides SweepResult's facts,
     the shards stored now and the reduced rows by the first point index of their shard (of the
-    shards stored now and of those an earlier attempt left), and the workers' CPU time [s]."""
+    shards stored now and of those an earlier attempt left), the per-point columns of the shards
+    stored now (by the same key), the point that stopped the sweep, and the workers' CPU time [s]."""
 
     stored: list[Shard] = field(default_factory=list)
     tables: dict[int, pd.DataFrame] = field(default_factory=dict)
+    columns: dict[int, LogColumns] = field(default_factory=dict)
     stopped_at: int | None = None
     workers_cpu_s: float = 0.0
 
@@ -129,6 +131,8 @@ def run_sharded_sweep(scene: StandScene, stand: Stand, points: Sequence[PlannedP
                 path = store_shard(folder, done.written[0], done.written[-1], done.shard)
                 result.stored.append(Shard(path, done.written))
                 result.written.extend(done.written)
+                if done.columns is not None:
+                    result.columns[done.written[0]] = done.columns
             if done.error is not None:
                 raise done.error.error()
             for index, settings, message in done.failures:
