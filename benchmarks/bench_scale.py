@@ -1,7 +1,8 @@
-"""Cost of a study per operating point: time and log bytes for 100 / 1 600 / 10 000 points.
+"""Cost of a study per operating point: time and log bytes for 100 / 1 600 / 10 000 points, and how a
+study scales out on worker processes.
 
     python benchmarks/bench_scale.py [--points 100 1600 10000] [--repeats 1] [--jobs 1] [--gate-time 4.0]
-                                     [--study 100000] [--study-workers 2]
+                                     [--study 100000] [--study-workers 2] [--scaling 10000]
 
 The scene is the built-in `default` (stand A, quasi-static drive, 4 s gates, instruments on)
 with only the sweep's `num` raised (issue 12). Each run is `python -m rig run SCENE -o DIR` in a
@@ -19,6 +20,17 @@ with ``-j`` ``--study-workers`` (a local process pool), and prints points per se
 (the workers' included) and bytes per point. ``--points`` with no sizes skips the table. On a
 shared machine wall times are noisy: the CPU time and the load average before each run are
 printed beside them. Never asserts: a benchmark reports.
+
+``--scaling N`` runs a study of N points three times side by side: ``-j 1``, ``-j 2`` and on a Dask
+LocalCluster of two single-thread worker processes, each `rig run` (the API's run_scene) in a fresh
+process. Per run: wall time, the parent's CPU time (the process that runs the study: it stores the
+workers' shards, merges them into log.h5, writes reduced.csv, the figure and the summary) and the
+workers' CPU time (the pool's processes, or the cluster's workers measured on the workers), per
+point [ms]; the serial fraction s = parent CPU / (parent + workers CPU) - the part of the study no
+worker can take over - and Amdahl's projection of the wall time and speed-up on 8, 32 and 128
+workers, wall(p) = total CPU (s + (1 - s)/p); the speed-up of ``-j 2`` and of the cluster over
+``-j 1`` measured in the same run, and the load average before each run. ``--peak-memory`` adds
+the parent's peak resident memory [MB] of each run (ru_maxrss).
 """
 
 from __future__ import annotations
@@ -39,6 +51,8 @@ import h5py
 BUDGET_S_1600 = 10.0  # issue 12: 1 600 points <= 10 s with -j 1
 BUDGET_OVERHEAD_B = 1024.0  # issue 12: <= 1 KB per point beyond the raw samples
 BUDGET_FRAMES_S = 0.5  # issue 12: a group of 1 600 points as a DataFrame in one call, <= 0.5 s
+BUDGET_PARENT_SHARE = 0.05  # issue 29: the parent's CPU <= 5 % of the study's CPU (10 000 points)
+BUDGET_SPEEDUP_2 = 1.6  # issue 29: -j 2 and a two-worker LocalCluster >= 1.6x faster than -j 1 (idle 2 cores)
 
 
 def scene_file(folder: Path, points: int, gate_time_s: float) -> Path:
@@ -111,6 +125,96 @@ def dask_run(scene: Path, workers: int) -> dict[str, float]:
     return run
 
 
+def child_run(scene: str, out: str, where: str) -> int:
+    """In a fresh process (``--child``): run the study with ``-j`` ``where`` or on the scheduler at
+    address ``where``; print the wall time, this process's CPU time and its children's (the pool's
+    workers) [s] and its peak resident memory [MB] as one line of JSON."""
+    import json
+
+    from rig.runner import run_scene
+    from rig.scenes import load_scene
+
+    t0 = time.perf_counter()
+    options = {"jobs": int(where)} if where.isdigit() else {"scheduler": where}
+    report = run_scene(load_scene(scene), Path(out), progress=False, **options)
+    wall = time.perf_counter() - t0
+    me, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    print(json.dumps({"wall": wall, "parent": me.ru_utime + me.ru_stime, "pool": children.ru_utime + children.ru_stime,
+                      "maxrss_MB": me.ru_maxrss / 1024.0, "in_log": report.in_log}))
+    return 0
+
+
+def _workers_cpu() -> float:
+    """CPU time [s] of this worker process so far (run on every worker of the cluster)."""
+    usage = resource.getrusage(resource.RUSAGE_SELF)
+    return usage.ru_utime + usage.ru_stime
+
+
+def scaling_run(scene: Path, where: str, client=None) -> dict[str, float]:
+    """One study in a fresh process (see child_run); with ``client`` (the LocalCluster's), the
+    workers' CPU time is measured on the workers, before and after."""
+    import json
+
+    load = os.getloadavg()[0]
+    before = sum(client.run(_workers_cpu).values()) if client is not None else 0.0
+    with tempfile.TemporaryDirectory(prefix="bench_scale_") as out:
+        command = [sys.executable, __file__, "--child", str(scene), out, where]
+        done = subprocess.run(command, capture_output=True, text=True)
+        log = Path(out) / "log.h5"
+        size = log.stat().st_size if log.exists() else 0
+    if done.returncode != 0:
+        raise SystemExit(f"`{' '.join(command)}` exited with {done.returncode}:\n{done.stderr[-3000:]}")
+    run = json.loads(done.stdout.strip().splitlines()[-1])
+    run["workers"] = run.pop("pool") if client is None else sum(client.run(_workers_cpu).values()) - before
+    run["load"], run["size"] = load, size
+    return run
+
+
+def amdahl_wall(total_cpu: float, serial: float, workers: int) -> float:
+    """Amdahl's law: the wall time [s] of work ``total_cpu`` [s] whose fraction ``serial`` runs on one
+    process, the rest shared by ``workers`` processes."""
+    return total_cpu * (serial + (1.0 - serial) / workers)
+
+
+SCALING_RUNS = {"j1": "-j 1", "j2": "-j 2", "cluster": "LocalCluster 2 workers"}
+
+
+def scaling(points: int, gate_time_s: float, folder: Path, peak_memory: bool, which: list[str]) -> None:
+    """-j 1, -j 2 and a two-worker LocalCluster (those of ``which``) side by side on a study of ``points`` points."""
+    scene = scene_file(folder, points, gate_time_s)
+    runs = {}
+    if "j1" in which:
+        runs["-j 1"] = scaling_run(scene, "1")
+    if "j2" in which:
+        runs["-j 2"] = scaling_run(scene, "2")
+    if "cluster" in which:
+        from distributed import Client, LocalCluster
+
+        with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
+                Client(cluster.scheduler_address, set_as_default=False) as client:
+            runs["LocalCluster 2 workers"] = scaling_run(scene, cluster.scheduler_address, client)
+    print(f"\nscaling: {points} points, the default scene (gate {gate_time_s:g} s); parent = the process that runs "
+          "the study, workers = the pool's processes or the cluster's workers")
+    print(f"{'run':>24} {'wall [s]':>9} {'load':>5} {'parent [ms/pt]':>14} {'workers [ms/pt]':>15} "
+          f"{'total [ms/pt]':>13} {'serial s':>8} {'speed-up':>8}" + (f" {'peak [MB]':>9}" if peak_memory else ""))
+    base = runs["-j 1"]["wall"] if "-j 1" in runs else math.nan
+    for label, run in runs.items():
+        total = run["parent"] + run["workers"]
+        print(f"{label:>24} {run['wall']:>9.2f} {run['load']:>5.2f} {1e3 * run['parent'] / points:>14.3f} "
+              f"{1e3 * run['workers'] / points:>15.3f} {1e3 * total / points:>13.3f} {run['parent'] / total:>8.4f} "
+              f"{base / run['wall']:>7.2f}x" + (f" {run['maxrss_MB']:>9.0f}" if peak_memory else ""))
+    for label in [label for label in ("-j 2", "LocalCluster 2 workers") if label in runs]:
+        run = runs[label]
+        total = run["parent"] + run["workers"]
+        serial = run["parent"] / total
+        projection = ", ".join(f"{p} workers {amdahl_wall(total, serial, p):.1f} s ({1.0 / (serial + (1 - serial) / p):.1f}x)"
+                               for p in (8, 32, 128))
+        print(f"{label}: parent CPU {100 * serial:.2f} % of the study's CPU ({verdict(serial <= BUDGET_PARENT_SHARE)} "
+              f"the budget {100 * BUDGET_PARENT_SHARE:g} %); speed-up over -j 1 {base / run['wall']:.2f}x "
+              f"({verdict(base / run['wall'] >= BUDGET_SPEEDUP_2)} the budget {BUDGET_SPEEDUP_2:g}x on an idle 2-core "
+              f"machine); Amdahl: {projection}")
+
+
 def verdict(met: bool) -> str:
     """A budget's verdict as printed."""
     return "met" if met else "NOT met"
@@ -133,7 +237,15 @@ def main() -> int:
                         help="also run this many points on a Dask LocalCluster and with a process pool")
     parser.add_argument("--study-workers", type=int, default=2,
                         help="workers of the LocalCluster and of the pool (-j) of the study (default 2)")
+    parser.add_argument("--scaling", type=int, default=0,
+                        help="also run this many points with -j 1, -j 2 and on a two-worker LocalCluster side by side")
+    parser.add_argument("--peak-memory", action="store_true", help="print the parent's peak memory of each --scaling run")
+    parser.add_argument("--scaling-runs", nargs="+", choices=sorted(SCALING_RUNS), default=list(SCALING_RUNS),
+                        help="which --scaling runs (default: all three)")
+    parser.add_argument("--child", nargs=3, metavar=("SCENE", "OUT", "WHERE"), help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.child:
+        return child_run(*args.child)
 
     with tempfile.TemporaryDirectory(prefix="bench_scale_scenes_") as folder:
         warm = scene_file(Path(folder), 3, args.gate_time)
@@ -164,6 +276,8 @@ def main() -> int:
             print(study_line(f"Dask LocalCluster, {args.study_workers} workers", args.study,
                              dask_run(scene, args.study_workers)))
             print(study_line(f"-j {args.study_workers}", args.study, run_once(scene, args.study_workers)))
+        if args.scaling:
+            scaling(args.scaling, args.gate_time, Path(folder), args.peak_memory, args.scaling_runs)
     return 0
 
 

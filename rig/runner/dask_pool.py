@@ -126,6 +126,59 @@ def _simulate_batch(run: str, version: str, scene: StandScene,
     return results
 
 
+def _task(run: str, version: str, scene: StandScene, task):
+    """A chunk task (rig.runner.chunks) on a worker, with this thread's calibrated stand."""
+    from rig.runner.chunks import failed, run_task
+
+    if rig.__version__ != version:
+        return failed(task, WorkerError(f"the worker has friction-rig {rig.__version__}, the client {version}"))
+    try:
+        stand = _stand_for(run, scene)
+    except Exception as error:  # noqa: BLE001 - the stand failed to build or calibrate on the worker
+        return failed(task, error)
+    return run_task(stand, scene, task)
+
+
+def _what(task) -> str:
+    """A chunk task named in an error: its first point (and how many follow it)."""
+    points = getattr(task, "points", None)
+    if points is None:
+        return f"the reduction of the logged points from point {task.first} on"
+    point = points[0]
+    more = f" (and the {len(points) - 1} after it in its chunk)" if len(points) > 1 else ""
+    return f"point {point.index} {dict(point.settings)}{more}"
+
+
+def run_dask_tasks(scene: StandScene, make_tasks: Callable[[int], Sequence], address: str,
+                   deliver: Callable[[object], bool]) -> None:
+    """Do the tasks ``make_tasks(worker threads)`` (rig.runner.chunks) on the cluster of the scheduler
+    at ``address``; ``deliver`` gets each result in task order and returns True to end the sweep there
+    (the tasks not needed are cancelled). The scene goes to the workers once."""
+    client = _connect(address)
+    run = uuid.uuid4().hex
+    futures: list = []
+    try:
+        tasks = make_tasks(max(1, sum(client.nthreads().values())))
+        shared = client.scatter(scene, broadcast=True, hash=False)  # once, not with every task
+        futures = [client.submit(_task, run, rig.__version__, shared, task, key=f"rig-chunk-{i}-{run}")
+                   for i, task in enumerate(tasks)]
+        for i, future in enumerate(futures):
+            try:
+                result = future.result()
+            except Exception as error:  # noqa: BLE001 - a worker died, the task was lost or not (un)picklable
+                raise WorkerError(f"{_what(tasks[i])}: the Dask cluster did not run it "
+                                  f"({type(error).__name__}: {error})") from error
+            future.release()  # the worker may forget a chunk once it is read (a large study's memory)
+            futures[i] = None
+            if deliver(result):
+                break
+    finally:
+        pending = [future for future in futures if future is not None]
+        if pending:
+            client.cancel(pending)
+        client.close()
+
+
 def batch_size(points: int, threads: int) -> int:
     """Points per task: about TASKS_PER_THREAD tasks per worker thread (a cluster without workers yet
     counts as one), 1 to MAX_BATCH points each."""

@@ -3,8 +3,9 @@
 One panel per reduced quantity (l/a, c/a, mu_v, mu_T - those the table has); x is the innermost
 swept setting, labelled with its name and unit (setting_label; the point index when nothing is
 swept); one series per combination of the outer swept settings and of the settings that tell
-the procedure's series apart. Points: reduced value +- its standard uncertainty u_<name>; line:
-true_<name>.
+the procedure's series apart. Points: reduced value +- its standard uncertainty u_<name> (error
+bars; a shaded band for a series of more than MAX_ERROR_BARS points, whose bars would merge into
+one another); line: true_<name>.
 The paper-like campaign figures are drawn elsewhere.
 """
 
@@ -30,6 +31,9 @@ SETTING_NAMES = {
 SETTING_UNITS = ("N m", "rad/s", "m/s", "N", "m", "rad", "s", "Hz", "K", "V")
 """Units a setting key may end with (scene keys are ``<name>_<safe unit>``, e.g. ``brake_setpoint_N_m``)."""
 QUANTITIES = {"l_over_a": "$l/a$", "c_over_a": "$c/a$", "mu_v": r"$\mu_v$", "mu_T": r"$\mu_T$"}
+MAX_ERROR_BARS = 200
+"""Most points of a series drawn with error bars; a longer series gets a band of +- u (one polygon,
+not thousands of bars: the figure of a 10^5-point study costs no more than that of a short one)."""
 
 
 def _series(table: pd.DataFrame, plan: Sequence[PlannedPoint], procedure: Procedure):
@@ -93,8 +97,13 @@ def draw_reduced_vs_truth(table: pd.DataFrame, plan: Sequence[PlannedPoint], pro
             color = colors[k % len(colors)]
             y = table[name].to_numpy(dtype=float)[positions]
             u = table[f"u_{name}"].to_numpy(dtype=float)[positions] if f"u_{name}" in table else None
-            ax.errorbar(x, y, yerr=None if u is None else np.nan_to_num(u), fmt="o", ms=4, capsize=3, color=color,
-                        label=f"reduced {label}".strip())
+            if x.size <= MAX_ERROR_BARS:
+                ax.errorbar(x, y, yerr=None if u is None else np.nan_to_num(u), fmt="o", ms=4, capsize=3, color=color,
+                            label=f"reduced {label}".strip())
+            else:
+                ax.plot(x, y, ".", ms=2, color=color, label=f"reduced {label} (band: +- u)".strip())
+                if u is not None:
+                    ax.fill_between(x, y - np.nan_to_num(u), y + np.nan_to_num(u), color=color, alpha=0.25, lw=0)
             if f"true_{name}" in table:
                 ax.plot(x, table[f"true_{name}"].to_numpy(dtype=float)[positions], "-", color=color, alpha=0.7,
                         label=f"truth {label}".strip())

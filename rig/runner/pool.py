@@ -96,6 +96,9 @@ def accept(result: PointResult | PointFailure, scene: StandScene, deliver: Calla
 
 _worker: dict = {}
 
+TASKS_AHEAD = 3
+"""Chunks queued per process of the pool [1] (one running, the next ones ready)."""
+
 
 def _start_worker(scene: StandScene) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle (one line, exit 130)
@@ -106,6 +109,42 @@ def _start_worker(scene: StandScene) -> None:
 
 def _simulate(point: PlannedPoint) -> PointResult | PointFailure:
     return simulate_point(_worker["stand"], _worker["scene"], point)
+
+
+def _run_task(task):
+    from rig.runner.chunks import run_task
+
+    return run_task(_worker["stand"], _worker["scene"], task)
+
+
+def run_pool_tasks(scene: StandScene, make_tasks: Callable[[int], Sequence], jobs: int,
+                   deliver: Callable[[object], bool]) -> None:
+    """Do the tasks ``make_tasks(jobs)`` (rig.runner.chunks) on ``jobs`` processes; ``deliver`` gets
+    each result in task order and returns True to end the sweep there (the tasks after it are
+    cancelled). At most ``TASKS_AHEAD`` tasks per process are queued, so that results waiting for
+    an earlier one to be delivered never pile up."""
+    context = multiprocessing.get_context("spawn")
+    pool = ProcessPoolExecutor(max_workers=jobs, mp_context=context, initializer=_start_worker, initargs=(scene,))
+    try:
+        tasks = iter(make_tasks(jobs))
+        futures: collections.deque = collections.deque()
+        while True:
+            while len(futures) < TASKS_AHEAD * jobs:
+                task = next(tasks, None)
+                if task is None:
+                    break
+                futures.append(pool.submit(_run_task, task))
+            if not futures:
+                break
+            try:
+                result = futures.popleft().result()
+            except BrokenProcessPool as error:  # a worker died, e.g. the stand failed to build or calibrate
+                raise WorkerError(f"a worker process of the pool failed ({error}); run with --jobs 1 to see the "
+                                  "error of the stand") from None
+            if deliver(result):
+                break
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)
 
 
 def run_pool(scene: StandScene, points: Sequence[PlannedPoint], jobs: int,

@@ -89,12 +89,41 @@ def read_truth_if_any(log_path: Path) -> pd.DataFrame | None:
         return None
 
 
-def reduce_to_files(stand: Stand, log_path: Path, contact: ContactSpec, out_dir: Path) -> Reduction:
-    """Reduce ``log_path`` with ``stand``; write ``out_dir/reduced.csv`` and ``/reduced`` into the log."""
+def reduce_table(stand: Stand, log_path: Path, contact: ContactSpec) -> pd.DataFrame:
+    """The stand's reduced table of ``log_path`` with the truth beside it (``true_<name>``)."""
     table = stand.reduce_log(log_path, contact)
     if not isinstance(table, pd.DataFrame):
         raise RigError(f"stand {stand.name!r}: reduce_log returned {type(table).__name__}, not a DataFrame")
-    table = attach_truth(table, read_truth_if_any(log_path))
+    return attach_truth(table, read_truth_if_any(log_path))
+
+
+def gathered_table(tables: list[pd.DataFrame | None]) -> pd.DataFrame | None:
+    """The reduced table of a log from the reduced tables of its shards (in point order): their rows
+    one after the other, as the whole log's reduction gives them (a point's row depends only on
+    its record). None when a shard's table is missing or the tables differ in columns, dtypes or
+    units (then the log is reduced whole)."""
+    if not tables or any(table is None for table in tables):
+        return None
+    first = tables[0]
+    for table in tables[1:]:
+        if (list(table.columns) != list(first.columns) or not table.dtypes.equals(first.dtypes)
+                or table.attrs.get("units") != first.attrs.get("units") or table.index.name != first.index.name):
+            return None
+    table = pd.concat(tables) if len(tables) > 1 else first.copy()
+    if not table.index.is_monotonic_increasing or not table.index.is_unique:
+        return None
+    notes = list(dict.fromkeys(note for part in tables for note in part.attrs.get("notes", ())))
+    table.attrs = {"units": dict(first.attrs.get("units", {}))} | ({"notes": notes} if notes else {})
+    return table
+
+
+def reduce_to_files(stand: Stand, log_path: Path, contact: ContactSpec, out_dir: Path) -> Reduction:
+    """Reduce ``log_path`` with ``stand``; write ``out_dir/reduced.csv`` and ``/reduced`` into the log."""
+    return table_to_files(reduce_table(stand, log_path, contact), log_path, out_dir)
+
+
+def table_to_files(table: pd.DataFrame, log_path: Path, out_dir: Path) -> Reduction:
+    """Write a reduced table of ``log_path`` as ``out_dir/reduced.csv`` and as ``/reduced`` into the log."""
     damaged = damaged_points(table)
     notes = tuple(table.attrs.get("notes", ()))
     csv = out_dir / REDUCED_CSV

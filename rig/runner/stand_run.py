@@ -18,21 +18,26 @@ the staging folder intact, so running the scene again resumes.
 
 from __future__ import annotations
 
+import contextlib
 from dataclasses import dataclass
 from pathlib import Path
 
+import pandas as pd
+
 from rig import validate
 from rig.campaigns import paper_figure
-from rig.errors import RigError
-from rig.logbook import LogWriter, RunMetadata, point_indices, read_point, utc_timestamp
+from rig.errors import LogFormatError, RigError
+from rig.logbook import LogWriter, RunMetadata, point_indices, read_metadata, read_point, staging_dir, utc_timestamp
+from rig.logbook.shards import Shard, find_shards, merge_logs, remove_shards, shard_folder
+from rig.logbook.writer import RUN_PART, same_run
 from rig.runner.dask_pool import check_scheduler
 from rig.runner.figures import reduced_vs_truth_figure
 from rig.runner.folder_lock import folder_lock
 from rig.runner.outputs import REDUCED_FIGURE, STAND_KIND, SUMMARY_NAME, claim_folder, output_folder, remove_stale, staged_outputs
 from rig.runner.pool import WorkerError
-from rig.runner.reduction import Reduction, read_truth_if_any, reduce_to_files
+from rig.runner.reduction import Reduction, gathered_table, read_truth_if_any, reduce_to_files, table_to_files
 from rig.runner.summary import RunFacts, summary_text
-from rig.runner.sweep import SETTLE_TRUTH, Failure, run_sweep
+from rig.runner.sweep import SETTLE_TRUTH, Failure, ShardedSweep, run_sharded_sweep, run_sweep
 from rig.scenes.stand_scene import StandScene
 from rig.stands.base import Stand
 
@@ -84,43 +89,107 @@ def _run_locked(scene: StandScene, out_dir: Path, jobs: int, scheduler: str | No
     """The run, with the folder's lock held (a finished log of this run is reused: rig.logbook.LogWriter)."""
     log_path = out_dir / LOG_NAME
     stand = scene.build_stand()  # before the log is opened: a stand that cannot be built leaves nothing
+    folder = shard_folder(log_path)
+    if not (staging_dir(log_path) / RUN_PART).is_file():
+        remove_shards(folder)  # not of a run that can be resumed
     writer = LogWriter(log_path, RunMetadata(scene.text, scene.seed, scene.stand, utc_timestamp()))
+    finished = _finished_points(log_path, writer.metadata)
+    earlier = []
+    for shard in find_shards(folder, writer.metadata):
+        if finished.issuperset(shard.indices):  # merged into the finished log before a kill
+            shard.path.unlink()
+        else:
+            earlier.append(shard)
     plan = scene.procedure.points()
-    todo = [point for point in plan if point.index not in writer.done]
-    serial = scheduler is None and (jobs == 1 or len(todo) <= 1)
+    done = set(writer.done).union(*(shard.indices for shard in earlier))
+    todo = [point for point in plan if point.index not in done]
+    sharded = bool(earlier) or ((scheduler is not None or jobs > 1) and len(todo) > 1)
+    serial = not sharded and scheduler is None
     try:
-        if serial and todo:
-            stand.calibrate(scene.seed)
-        sweep = run_sweep(scene, stand if serial else None, todo, writer, jobs=1 if serial else jobs,
-                          progress=progress, scheduler=scheduler)
+        if sharded:
+            sweep = run_sharded_sweep(scene, stand, todo, earlier, folder, writer.metadata, jobs=jobs,
+                                      progress=progress, scheduler=scheduler)
+        else:
+            if serial and todo:
+                stand.calibrate(scene.seed)
+            sweep = run_sweep(scene, stand if serial else None, todo, writer, jobs=1 if serial else jobs,
+                              progress=progress, scheduler=scheduler)
     except RigError as error:
         if not isinstance(error, WorkerError):  # a named error of the scene: a rerun would meet it again
-            writer.discard()
+            _discard(writer, log_path)
         raise
     remove_stale(out_dir)  # the previous outputs describe the log about to be replaced
-    writer.finalize()
+    table = _finalize(writer, log_path, earlier, sweep) if sharded else writer.finalize() and None
     facts = RunFacts(
         planned=len(plan), resumed=len(plan) - len(todo), written_now=len(sweep.written), failures=sweep.failures,
         stopped=sweep.stopped, jobs=jobs, scheduler=scheduler, settle_times_s=_settle_times(log_path),
         calibration=_calibration_names(log_path), operator_time_s=sweep.operator_time_s,
     )
     with staged_outputs(out_dir) as staging:
-        files, text, reduction = _write_outputs(scene, stand, log_path, facts, staging)
+        files, text, reduction = _write_outputs(scene, stand, log_path, facts, staging, table)
     return RunReport(out_dir, tuple(files), len(plan), facts.resumed + facts.written_now, facts.resumed,
                      tuple(sweep.failures), sweep.stopped, text, () if reduction is None else reduction.damaged)
 
 
-def _write_outputs(scene: StandScene, stand: Stand, log_path: Path, facts: RunFacts,
-                   staging: Path) -> tuple[list[str], str, Reduction | None]:
-    """Reduce the finalized log, draw the figures and write summary.txt into ``staging``; returns the
-    names of the run's files, the summary text and the reduction (None when not reduced)."""
+def _discard(writer: LogWriter, log_path: Path) -> None:
+    """Remove the staging folder: ``run.h5`` first (the folder then holds no run to resume), the shards."""
+    writer.discard()
+    remove_shards(shard_folder(log_path))
+    with contextlib.suppress(OSError):
+        staging_dir(log_path).rmdir()
+
+
+def _finished_points(log_path: Path, metadata: RunMetadata) -> set[int]:
+    """The points of a finished log of this same run at ``log_path`` (else none)."""
+    try:
+        if same_run(metadata, read_metadata(log_path)) is not None:
+            return set()
+        return set(point_indices(log_path))
+    except LogFormatError:
+        return set()
+
+
+def _finalize(writer: LogWriter, log_path: Path, earlier: list[Shard], sweep: ShardedSweep) -> pd.DataFrame | None:
+    """Lay the run's points out as ``log_path`` from the shards (and the points the writer holds from a
+    serial attempt or a finished log), remove the staging folder; returns the reduced table gathered
+    from the shards when every point's rows are there and alike (None: the log is reduced whole)."""
+    shards = [shard for shard in [*earlier, *sweep.stored]
+              if sweep.stopped_at is None or shard.indices[0] < sweep.stopped_at]
+    for shard in [*earlier, *sweep.stored]:
+        if shard not in shards:  # past the point that stopped the sweep, as a serial run would not log them
+            shard.path.unlink()
+    shards.sort(key=lambda shard: shard.indices[0])
+    folder = shard_folder(log_path)
+    held = set(writer.done)
+    if not shards:
+        writer.finalize()
+        remove_shards(folder)
+        return None
+    sources = [shard.path for shard in shards]
+    if held:  # points of a serial attempt's journal or of a finished log: that log first, then the shards
+        writer.finalize()
+        merge_logs(log_path, writer.metadata, [log_path, *sources], tmp_folder=log_path.parent)
+        remove_shards(folder)
+        return None
+    merge_logs(log_path, writer.metadata, sources, tmp_folder=staging_dir(log_path),
+               columns=[sweep.columns.get(shard.indices[0]) for shard in shards])
+    _discard(writer, log_path)
+    return gathered_table([sweep.tables.get(shard.indices[0]) for shard in shards])
+
+
+def _write_outputs(scene: StandScene, stand: Stand, log_path: Path, facts: RunFacts, staging: Path,
+                   table: pd.DataFrame | None = None) -> tuple[list[str], str, Reduction | None]:
+    """Reduce the finalized log (unless ``table``, its reduced table gathered from the workers, is
+    given), draw the figures and write summary.txt into ``staging``; returns the names of the run's
+    files, the summary text and the reduction (None when not reduced)."""
     files, problems = [LOG_NAME], []
     reduction: Reduction | None = None
     empty = not point_indices(log_path)
     if scene.outputs.reduce and empty:
         problems.append("not reduced: the log holds no operating point (every point failed)")
     if scene.outputs.reduce and not empty:
-        reduction = reduce_to_files(stand, log_path, scene.contact, staging)
+        reduction = (reduce_to_files(stand, log_path, scene.contact, staging) if table is None
+                     else table_to_files(table, log_path, staging))
         files.append(reduction.csv.name)
         problems.extend(reduction.problems)
     campaign_lines: tuple[str, ...] = ()

@@ -19,19 +19,20 @@ import sys
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
+import pandas as pd
 from tqdm import tqdm
 
 from rig.errors import ParameterError
-from rig.logbook import LogWriter, Quantity
-from rig.runner.dask_pool import run_dask
+from rig.logbook import LogWriter, RunMetadata
+from rig.logbook.shards import LogColumns, Shard, store_shard
+from rig.runner.chunks import SETTLE_TRUTH, ChunkResult, ReduceTask, logged_truth, run_task, simulate_tasks
+from rig.runner.dask_pool import run_dask, run_dask_tasks
 from rig.runner.operator import PointResult, run_operator
-from rig.runner.pool import run_pool
+from rig.runner.pool import run_pool, run_pool_tasks
 from rig.scenes.procedure import PlannedPoint, TimeoutPolicy
 from rig.scenes.stand_scene import StandScene
 from rig.stands.base import Stand
 
-SETTLE_TRUTH = "operator_settle_time"
-"""Truth entry the operator adds to every point: settle time [s]."""
 
 
 @dataclass(frozen=True)
@@ -77,11 +78,7 @@ def run_sweep(scene: StandScene, stand: Stand | None, points: Sequence[PlannedPo
                 result.failures.append(Failure(point.index, dict(point.settings), finished.failure or ""))
                 result.stopped = scene.procedure.on_settle_timeout is TimeoutPolicy.STOP
             else:
-                truth = dict(finished.outcome.truth)
-                if SETTLE_TRUTH in truth:
-                    raise ParameterError("truth", SETTLE_TRUTH, "a name other than the operator's own entry")
-                truth[SETTLE_TRUTH] = Quantity(finished.settle.duration_s, "s")
-                writer.write_point(finished.outcome.record, truth)
+                writer.write_point(finished.outcome.record, logged_truth(finished))
                 result.written.append(point.index)
             bar.update(1)
 
@@ -93,4 +90,69 @@ def run_sweep(scene: StandScene, stand: Stand | None, points: Sequence[PlannedPo
             result.operator_time_s = run_operator(stand, points, scene.procedure, scene.seed, deliver)
         else:
             run_pool(scene, points, jobs, deliver)
+    return result
+
+
+@dataclass
+class ShardedSweep(SweepResult):
+    """A sweep whose points were logged in shards (rig.runner.chunks): besides SweepResult's facts,
+    the shards stored now and the reduced rows by the first point index of their shard (of the
+    shards stored now and of those an earlier attempt left), the per-point columns of the shards
+    stored now (by the same key), the point that stopped the sweep, and the workers' CPU time [s]."""
+
+    stored: list[Shard] = field(default_factory=list)
+    tables: dict[int, pd.DataFrame] = field(default_factory=dict)
+    columns: dict[int, LogColumns] = field(default_factory=dict)
+    stopped_at: int | None = None
+    workers_cpu_s: float = 0.0
+
+
+def run_sharded_sweep(scene: StandScene, stand: Stand, points: Sequence[PlannedPoint], earlier: Sequence[Shard],
+                      folder, metadata: RunMetadata, *, jobs: int, progress: bool | None,
+                      scheduler: str | None = None) -> ShardedSweep:
+    """Simulate, log and reduce ``points`` in chunks on the workers (``jobs`` processes, the Dask
+    scheduler at ``scheduler``, or this process with ``stand`` when ``jobs`` is 1), storing each
+    chunk's shard in ``folder`` as its result arrives (in plan order); the shards ``earlier`` (of an
+    interrupted attempt) are reduced on the workers too when the scene reduces. A point's error is
+    raised as a serial run raises it, after the chunks before it are stored."""
+    result = ShardedSweep()
+    reduce = scene.outputs.reduce
+    earlier_tasks = [ReduceTask(shard.indices[0], shard.path.read_bytes()) for shard in earlier] if reduce else []
+
+    def make_tasks(workers: int) -> list:
+        return [*earlier_tasks, *simulate_tasks(points, metadata, reduce, workers)]
+
+    with tqdm(total=len(points), desc=f"scene {scene.name}", unit="point", disable=not show_progress(progress),
+              file=sys.stderr) as bar:
+
+        def deliver(done: ChunkResult) -> bool:
+            result.workers_cpu_s += done.cpu_s
+            if done.shard is not None:
+                path = store_shard(folder, done.written[0], done.written[-1], done.shard)
+                result.stored.append(Shard(path, done.written))
+                result.written.extend(done.written)
+                if done.columns is not None:
+                    result.columns[done.written[0]] = done.columns
+            if done.error is not None:
+                raise done.error.error()
+            for index, settings, message in done.failures:
+                result.failures.append(Failure(index, settings, message))
+            if done.table is not None:
+                result.tables[done.written[0] if done.written else done.first] = done.table
+            bar.update(len(done.written) + len(done.failures))
+            if done.stopped:
+                result.stopped, result.stopped_at = True, done.failures[-1][0]
+            return done.stopped
+
+        if scheduler is not None:
+            run_dask_tasks(scene, make_tasks, scheduler, deliver)
+        elif jobs > 1:
+            run_pool_tasks(scene, make_tasks, jobs, deliver)
+        else:
+            tasks = make_tasks(1)
+            if any(not isinstance(task, ReduceTask) for task in tasks):
+                stand.calibrate(scene.seed)
+            for task in tasks:
+                if deliver(run_task(stand, scene, task)):
+                    break
     return result

@@ -1,4 +1,5 @@
-"""The Dask path (``--scheduler``) gives the log and reduced table of a one-process run (issue 5, acceptance 4).
+"""The Dask path (``--scheduler``) and a process pool (``-j 2``) give the log and reduced table of a
+one-process run, also after a kill at a random moment and a rerun.
 
 One LocalCluster (2 worker processes, 1 thread each) serves the module. The reference is always a
 ``jobs`` = 1 run of the same seeded scene in another folder: logs are compared by content
@@ -9,12 +10,19 @@ stands are sent to the workers by module path, so the stands defined here are im
 
 from __future__ import annotations
 
+import contextlib
+import os
+import random
+import signal
 import subprocess
 import sys
+import time
 from collections import OrderedDict
+from pathlib import Path
 from concurrent.futures import ThreadPoolExecutor
 from unittest import mock
 
+import h5py
 import numpy as np
 import pandas as pd
 import pytest
@@ -23,12 +31,16 @@ from distributed import Client, LocalCluster
 import rig.runner.dask_pool
 import rig.stands
 from rig.errors import ParameterError
-from rig.logbook import LogWriter, RunMetadata, utc_timestamp
+from rig.logbook import RunMetadata, utc_timestamp
+from rig.logbook.shards import find_shards, shard_folder
 from rig.runner import run_scene
 from rig.runner.pool import WorkerError
 from rig.scenes import load_scene, parse_scene
 from tests.runner.fake_stand import NO_FIGURES, FakeStand, register, scene_text
-from tests.runner.logs import assert_same_log
+from tests.runner.logs import assert_same_log, log_objects
+from tests.runner.study_child import study_text
+
+REPO = Path(__file__).resolve().parents[2]
 
 SWEEP = NO_FIGURES | {"load_N = [5.0, 10.0, 20.0, 25.0]": "load_N = [5.0, 10.0, 50.0, 55.0, 60.0, 8.0]",
                       "mu = 0.3": "mu = 0.3\nsettle_tau_s = 1.0"}  # points 2 (10 -> 50 N) and 5 do not settle
@@ -150,8 +162,9 @@ def test_an_error_in_a_point_comes_back_naming_the_point(scheduler, tmp_path):
     scene = parse_scene(scene_text(NO_FIGURES | {'stand = "fake"': 'stand = "broken"'}), name="broken")
     with pytest.raises(WorkerError, match=r"(?s)point 1 \{'load_N': 10\.0.*RuntimeError: stand bug at point 1"):
         run_scene(scene, tmp_path / "run", scheduler=scheduler, progress=False)
-    resumed = LogWriter(tmp_path / "run" / "log.h5", RunMetadata(scene.text, scene.seed, scene.stand, utc_timestamp()))
-    assert resumed.done == {0}  # point 0 was written before the error: running again resumes
+    metadata = RunMetadata(scene.text, scene.seed, scene.stand, utc_timestamp())
+    shards = find_shards(shard_folder(tmp_path / "run" / "log.h5"), metadata)
+    assert [shard.indices for shard in shards] == [(0,)]  # point 0 was logged before the error: running again resumes
 
 
 class _Done:
@@ -183,7 +196,7 @@ class _ClientLosingPoint1:
         return value
 
     def submit(self, function, *args, key):
-        return _Lost() if any(point.index == 1 for point in args[-1]) else _Done(function(*args))
+        return _Lost() if any(point.index == 1 for point in args[-1].points) else _Done(function(*args))
 
     def cancel(self, futures):
         self.cancelled = list(futures)
@@ -270,3 +283,74 @@ def test_rig_does_not_import_dask_unless_asked():
             "print(sorted(m for m in sys.modules if m.split('.')[0] in ('dask', 'distributed')))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
+
+
+# ----------------------------------------------------------------------------- a study of a few hundred points
+
+STUDY_POINTS = 300
+KILL_WITHIN_S = 1.5  # the kill comes at a random moment this long [s] at most after the first chunk was logged
+GIVE_UP_S = 120.0  # a safety net against a hung child, not a timing assertion
+
+
+@pytest.fixture(scope="module")
+def study_reference(tmp_path_factory):
+    """The study on one process (the log written point by point, reduced whole): the reference."""
+    import rig.stands
+
+    rig.stands.STANDS["fake"] = "tests.runner.fake_stand:FakeStand"
+    try:
+        folder = tmp_path_factory.mktemp("study_one")
+        run_scene(parse_scene(study_text(STUDY_POINTS), name="study"), folder, progress=False)
+    finally:
+        del rig.stands.STANDS["fake"]
+    return folder
+
+
+def _same_study(folder, reference) -> None:
+    assert log_objects(folder / "log.h5") == log_objects(reference / "log.h5")  # every dataset, /reduced too
+    assert (folder / "reduced.csv").read_text() == (reference / "reduced.csv").read_text()
+    assert sorted(p.name for p in folder.iterdir()) == sorted(p.name for p in reference.iterdir())  # no staging
+
+
+def test_a_study_on_two_jobs_and_on_dask_equals_one_job(study_reference, scheduler, tmp_path):
+    scene = parse_scene(study_text(STUDY_POINTS), name="study")
+    pool = run_scene(scene, tmp_path / "pool", jobs=2, progress=False)
+    cluster = run_scene(scene, tmp_path / "dask", scheduler=scheduler, progress=False)
+    assert pool.in_log == cluster.in_log == STUDY_POINTS and pool.failures == cluster.failures == ()
+    _same_study(tmp_path / "pool", study_reference)
+    _same_study(tmp_path / "dask", study_reference)
+
+
+@pytest.mark.parametrize("where", ["jobs", "dask"])
+def test_a_study_killed_at_a_random_moment_resumes_to_the_same_outputs(study_reference, scheduler, tmp_path, where):
+    folder = tmp_path / "run"
+    given = "2" if where == "jobs" else scheduler
+    child = subprocess.Popen([sys.executable, "-m", "tests.runner.study_child", str(folder), str(STUDY_POINTS), given],
+                             cwd=REPO, start_new_session=True)  # its own group: the kill takes the pool's workers too
+    delay = random.uniform(0.0, KILL_WITHIN_S)
+    try:
+        waited = 0.0
+        while not any(shard_folder(folder / "log.h5").glob("points_*.h5")) and child.poll() is None:
+            assert waited < GIVE_UP_S, "the child never logged a chunk"
+            time.sleep(0.01)
+            waited += 0.01
+        time.sleep(delay)
+    finally:
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(child.pid, signal.SIGKILL)
+        child.wait()
+    logged = STUDY_POINTS if (folder / "log.h5").exists() else _points_in_shards(folder / "log.h5")
+    scene = parse_scene(study_text(STUDY_POINTS), name="study")
+    report = run_scene(scene, folder, progress=False, **({"jobs": 2} if where == "jobs" else {"scheduler": scheduler}))
+    killed = f"killed {delay:.2f} s after the first chunk was logged, {logged} points logged then"
+    assert report.in_log == STUDY_POINTS and report.resumed == logged, killed
+    _same_study(folder, study_reference)
+
+
+def _points_in_shards(log) -> int:
+    """Points in the complete shards a killed run left (read only: nothing is removed)."""
+    total = 0
+    for path in shard_folder(log).glob("points_*.h5"):
+        with h5py.File(path, "r") as handle:
+            total += handle["points/index"].shape[0]
+    return total
