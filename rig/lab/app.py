@@ -25,6 +25,7 @@ server restarted - is rebuilt from there on its first request.
 from __future__ import annotations
 
 import json
+import logging
 import secrets
 import threading
 import time
@@ -50,6 +51,9 @@ STAND_B_GEOMETRY = ("radius_c_m", "roller_radius_m", "pivot_distance_m", "half_l
 FRAME_S = 0.05  # real time between two frames of the live stream [s]
 RATIO_LIMITS = (0.1, 100.0)  # simulated time / real time of the live stream [1]
 MAX_SESSIONS = 1000
+MAX_POINTS = 200  # recorded points a session may hold (a submission lists each at most once)
+LOG = logging.getLogger("rig.lab")
+ERROR_CHARS = 400  # longest error text sent back
 GRADES_CSV = "grades.csv"  # the grade book, rewritten in the output folder after every submission
 
 
@@ -195,7 +199,7 @@ def _controls_spec() -> dict:
 
 def _answers(value: object, name: str, sheet: Sheet) -> dict[str, float]:
     if not isinstance(value, dict):
-        raise ParameterError(name, value, "a JSON object {output: number}")
+        raise ParameterError(name, rq.short(value), "a JSON object {output: number}")
     given = {key: v for key, v in value.items() if v is not None}  # an optional value left empty
     checked = rq.numbers({name: given}, name, sheet.required + sheet.optional)
     for key in sheet.required:
@@ -222,10 +226,11 @@ def create_app(lab: Lab) -> Flask:
     """The Flask application of ``lab``."""
     app = Flask(__name__, static_folder="static", static_url_path="/static")
     app.json.sort_keys = False
+    app.config["MAX_CONTENT_LENGTH"] = rq.MAX_BODY_BYTES  # werkzeug answers 413 above it, unread
 
     @app.errorhandler(ParameterError)
     def bad_request(error: ParameterError):
-        return jsonify(error=str(error), field=error.name), 400
+        return jsonify(error=str(error)[:ERROR_CHARS], field=str(error.name)[:ERROR_CHARS]), 400
 
     @app.errorhandler(UnknownSession)
     def unknown_session(error: UnknownSession):
@@ -238,10 +243,17 @@ def create_app(lab: Lab) -> Flask:
 
     @app.errorhandler(HTTPException)
     def http_error(error: HTTPException):
+        if error.code == 413:
+            return jsonify(error=f"the request body is larger than {rq.MAX_BODY_BYTES} bytes", field="body"), 413
         return jsonify(error=error.description, field="body" if error.code == 400 else "url"), error.code
 
+    @app.errorhandler(Exception)
+    def last_resort(error: Exception):  # a defect: logged with its traceback, the server keeps serving
+        LOG.exception("rig lab: unexpected error on %s %s", request.method, request.path)
+        return jsonify(error=f"internal error ({type(error).__name__}); the server logged it", field="server"), 500
+
     def body(allowed) -> dict:
-        return dict(rq.body(request.get_json(force=True, silent=True), allowed))
+        return dict(rq.body(rq.parse_json(request.get_data(cache=True)), allowed))
 
     @app.get("/")
     def page():
@@ -304,6 +316,8 @@ def create_app(lab: Lab) -> Flask:
         session = lab.get(ident)
         gate = rq.number(body(("gate_time_s",)), "gate_time_s", *GATE_LIMITS_S)
         with session.lock:
+            if len(session.outcomes) >= MAX_POINTS:
+                raise ParameterError("point", len(session.outcomes), f"at most {MAX_POINTS} recorded points a session")
             readings = session.record(gate)
             lab.persist(session)
             return jsonify(readings=readings, reduced=lab.reduced(session), version=session.version)
@@ -338,7 +352,9 @@ def create_app(lab: Lab) -> Flask:
         data = body(("answers",))
         entries = rq.required(data, "answers")
         if not isinstance(entries, list) or not entries:
-            raise ParameterError("answers", entries, "a non-empty list of {point, values}")
+            raise ParameterError("answers", rq.short(entries), "a non-empty list of {point, values}")
+        if len(entries) > MAX_POINTS:
+            raise ParameterError("answers", f"{len(entries)} entries", f"at most one entry per recorded point")
         with session.lock:
             if session.id not in lab.assigned:
                 raise ParameterError("session", session.id, "a session of an exercise (practice is not graded)")
@@ -347,6 +363,8 @@ def create_app(lab: Lab) -> Flask:
                 where = f"answers[{k}]"
                 entry = rq.body(entry, ("point", "values"), where)
                 point = _point(dict(entry), session, f"{where}.")
+                if any(result["point"] == point for result in results):
+                    raise ParameterError(f"{where}.point", point, "a point not listed before in this submission")
                 if "values" not in entry:
                     raise ParameterError(f"{where}.values", "missing", "a JSON object {output: number}")
                 answers = _answers(entry["values"], f"{where}.values", SHEETS[session.STAND])
