@@ -95,7 +95,7 @@ def _shown_reduction(driver) -> dict[int, dict[str, float]]:
     rows = {}
     for row in driver.find_elements(By.CSS_SELECTOR, "#reduction tbody tr"):
         point = int(row.find_element(By.CSS_SELECTOR, "td").text)
-        rows[point] = {name: row.find_element(By.CSS_SELECTOR, f"td.red-{name}").text for name in OUTPUTS}
+        rows[point] = {name: row.find_element(By.CSS_SELECTOR, f"td.red-{name}").get_attribute("data-value") for name in OUTPUTS}
     return rows
 
 
@@ -205,3 +205,26 @@ def test_a_reload_and_a_second_tab_share_one_uncorrupted_session(lab_server, bro
     assert [r[0] for r in rows] == ["0", "1"] and [r[3] for r in rows] == ["0", "0.6"]
     reduced = _rig_reduce(_save(browser))
     assert sorted(reduced) == [0, 1]
+
+
+def test_the_page_before_a_session_a_wild_entry_a_dropped_point_and_a_dead_server(lab_server, browser):
+    _open(browser, lab_server.url)
+    assert not browser.find_element(By.ID, "bench").is_displayed()  # no bench before a session
+    browser.find_element(By.ID, "open-practice").click()
+    _settled(browser)
+    point = _record(browser, "1")
+    _check(browser, point, {"l_over_a": 0.3, "c_over_a": 0.1, "mu_v": 1000.0, "mu_T": 0.4})
+    browser.find_element(By.ID, "show-reduction").click()
+    _wait(browser, lambda d: d.find_elements(By.CSS_SELECTOR, "#results circle.twin"))
+    assert len(browser.find_elements(By.CSS_SELECTOR, "#results path.off-scale")) == 1  # mu_v = 1000: at the edge
+    twin_y = [float(c.get_attribute("cy")) for c in browser.find_elements(By.CSS_SELECTOR, "#results circle.twin")]
+    assert all(15 < cy < 185 for cy in twin_y)  # the twin's points keep the plot
+    assert len(browser.find_elements(By.CSS_SELECTOR, "#results text")) > 6  # ticks with their values
+    shown = browser.find_element(By.CSS_SELECTOR, "#reduction td.red-mu_v").text
+    assert len(shown.replace("-", "").replace(".", "").lstrip("0")) <= 5  # five significant digits
+    browser.find_element(By.ID, f"drop-{point}").click()
+    assert not browser.find_elements(By.CSS_SELECTOR, "#results .student, #results circle.twin")
+    browser.execute_script("window.fetch = () => Promise.reject(new TypeError('network'))")  # the server is gone
+    browser.find_element(By.ID, "apply").click()
+    _wait(browser, lambda d: d.find_element(By.ID, "offline").is_displayed())
+    assert _attr(browser, "status", "data-state") == "offline"

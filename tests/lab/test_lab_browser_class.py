@@ -70,7 +70,8 @@ def test_a_class_two_students_and_the_teacher(lab_server, browser, screenshot):
     _wait(browser, lambda d: d.find_element(By.ID, "reduction").is_displayed())
     screenshot(browser, "class-final-submission", "sheet")
     # the answers are shown now: resubmitting them changes nothing
-    shown = {name: float(browser.find_element(By.CSS_SELECTOR, f"#reduction td.red-{name}").text) for name in FINALS}
+    shown = {name: float(browser.find_element(By.CSS_SELECTOR, f"#reduction td.red-{name}").get_attribute("data-value"))
+             for name in FINALS}
     assert not browser.find_element(By.ID, "submit").is_enabled()
     status, answer = lab_server.request("POST", f"api/sessions/{sid_1}/submit",
                                         {"answers": [{"point": 0, "values": shown}], "final": True},

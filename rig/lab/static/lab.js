@@ -3,7 +3,7 @@
 "use strict";
 
 const $ = (id) => document.getElementById(id);
-const lab = { spec: null, session: null, series: null, source: null, drift: null, answers: {}, shownTwin: {}, busy: 0,
+const lab = { spec: null, session: null, series: null, source: null, drift: null, answers: {}, shownTwin: {}, busy: 0, dropped: {},
               token: sessionStorage.getItem("rig-lab-token") || "" };
 const SYNC_MS = 2000;  // how often the page asks whether another tab changed the session
 const RPM = 60 / (2 * Math.PI), DEG = 180 / Math.PI;
@@ -141,7 +141,7 @@ async function settleNow() {
 async function enter(state) {
   const fresh = !lab.session || lab.session.id !== state.id;
   lab.session = state;
-  if (fresh) { lab.answers = {}; lab.shownTwin = {}; }
+  if (fresh) { lab.answers = {}; lab.shownTwin = {}; lab.dropped = {}; }
   for (const [point, values] of Object.entries(state.answers || {})) lab.answers[point] = values;
   $("bench").hidden = false;
   for (const s of Object.values(STANDS)) $(s.section).hidden = s !== stand();
@@ -151,6 +151,7 @@ async function enter(state) {
   const ex = state.exercise;
   $("session-info").textContent = `session ${state.id} · ${stand().label}` + (ex ? ` · exercise ${ex.id}: ${ex.title}` : " · practice");
   $("submit").hidden = $("final-label").hidden = !ex;
+  $("reset").hidden = !!ex;
   showRules(ex);
   showSettings(state.settings, state.free);
   $("strobe_ratio").value = state.strobe_ratio;
@@ -188,7 +189,7 @@ function buildSheet() {
   // the lab sheet of this stand: one row per step of the method, with its equations and an input
   // per quantity (symbol, unit), so that a wrong value is located to its step
   const spec = lab.spec[lab.session.stand];
-  $("points").tHead.innerHTML = "<tr><th>point</th>" + stand().columns.map(([h]) => `<th>${h}</th>`).join("") + "</tr>";
+  $("points").tHead.innerHTML = "<tr><th>point</th>" + stand().columns.map(([h]) => `<th>${h}</th>`).join("") + "<th>drop</th></tr>";
   $("answer-inputs").innerHTML = `<table id="steps"><tbody>` + spec.steps.map((st, k) =>
     `<tr id="step-${st.key}" data-ok=""><th>${k + 1}. ${st.text}</th><td class="tex">${tex(st.tex)}</td><td>` +
     st.quantities.map((q) => `<label>${tex(q.symbol)}${q.unit === "1" ? "" : ` [${q.unit}]`} <input id="ans-${q.name}" type="number" step="any" title="${q.name}"></label>`).join(" ") +
@@ -230,7 +231,7 @@ async function apply() {
   } catch (error) {
     showError(error);
     showSettings(lab.session.settings, lab.session.free);  // the stand stays as it was
-    setStatus("settled", "settled (unchanged)");
+    if (error.field === "server") setStatus("offline", "server unreachable"); else setStatus("settled", "settled (unchanged)");
   }
 }
 
@@ -395,6 +396,11 @@ function addReadings(r) {
   row.id = `point-${r.point}`;
   row.insertCell().textContent = r.point;
   for (const [, cell] of stand().columns) row.insertCell().textContent = cell(r);
+  const drop = document.createElement("input");
+  drop.type = "checkbox"; drop.id = `drop-${r.point}`; drop.title = "drop this point: left out of the results plot and the submission";
+  drop.checked = !!lab.dropped[r.point];
+  drop.onchange = () => { lab.dropped[r.point] = drop.checked; row.classList.toggle("dropped", drop.checked); drawResults(); };
+  row.insertCell().append(drop);
   const option = document.createElement("option");
   option.value = option.textContent = r.point;
   $("answer-point").append(option);
@@ -421,7 +427,7 @@ async function check() {
       `<span class="${ok ? "ok" : "wrong"}" id="s-${step}">${step.replace("_", " ")}: ${ok ? "within tolerance" : "not within tolerance"}</span>`);
     if (v.checks_left !== undefined) { lab.session.exercise.checks_left = v.checks_left; showRules(lab.session.exercise); }
     $("verdict").innerHTML = `<p>point ${point}: ${lines.join(" · ")}</p>` + (v.passed
-      ? `<p class="ok" id="verdict-text">every value agrees with the reduction within its uncertainty</p>`
+      ? `<p class="ok" id="verdict-text">every value agrees with the reduction of your readings within its tolerance</p>`
       : `<p class="wrong" id="verdict-text">go back to ${v.sent_back_to.text}</p>`);
     $("verdict").dataset.result = v.passed ? "passed" : `back:${v.sent_back_to.step}`;
     for (const [step, ok] of Object.entries(v.steps || {})) $(`step-${step}`).dataset.ok = ok === null ? "" : ok ? "yes" : "no";
@@ -442,7 +448,8 @@ function showReduction() {
     const row = t.tBodies[0].insertRow();
     row.insertCell().textContent = r.point;
     for (const n of names) {
-      const cell = row.insertCell(); cell.className = `red-${n}`; cell.textContent = r.values[n] === null ? "—" : String(r.values[n]);
+      const cell = row.insertCell(); cell.className = `red-${n}`; cell.dataset.value = r.values[n];
+      cell.textContent = r.values[n] === null ? "—" : sig(r.values[n], 5);  // five significant digits; the float in data-value
       row.insertCell().textContent = r.values[`U95_${n}`] === null ? "—" : r.values[`U95_${n}`].toPrecision(2);
     }
     row.insertCell().textContent = r.reason;
@@ -453,27 +460,36 @@ function showReduction() {
 }
 
 function drawResults() {
-  const svg = $("results"), rows = (lab.session.reduced || []).filter((r) => lab.shownTwin[r.point]);
+  // mu_v, mu_T over l/a: the student's (filled) beside the twin's (open, U95 bars). The axes are
+  // scaled to the twin's values, so one wild entry cannot squeeze the others: a value off the
+  // plot is drawn as a triangle at its edge, with the value in its tooltip. Dropped points are left out.
+  const svg = $("results"), rows = (lab.session.reduced || []).filter((r) => lab.shownTwin[r.point] && !lab.dropped[r.point]);
   const pts = [];
   for (const r of rows) {
     const v = r.values;
-    for (const m of ["mu_v", "mu_T"]) if (v[m] !== null) pts.push({ x: v.l_over_a, y: v[m], u: v[`U95_${m}`], twin: true, m });
+    for (const m of ["mu_v", "mu_T"]) if (v[m] !== null) pts.push({ x: v.l_over_a, y: v[m], u: v[`U95_${m}`] || 0, twin: true, m });
     const a = lab.answers[r.point];
-    if (a) for (const m of ["mu_v", "mu_T"]) if (a[m] !== undefined) pts.push({ x: a.l_over_a, y: a[m], twin: false, m });
+    if (a) for (const m of ["mu_v", "mu_T"]) if (a[m] !== undefined) pts.push({ x: a.l_over_a ?? v.l_over_a, y: a[m], twin: false, m });
   }
-  const W = 460, H = 220, lMax = Math.max(1.2, ...pts.map((p) => Math.abs(p.x) * 1.1));
-  const x = (l) => 40 + ((l + lMax) / (2 * lMax)) * (W - 50);
-  const yMax = Math.max(0.6, ...pts.map((p) => p.y + (p.u || 0))) * 1.05, y = (m) => H - 25 - (m / yMax) * (H - 35);
-  let s = `<rect x="40" y="10" width="${W - 50}" height="${H - 35}" fill="none" stroke="#999"/>`;
-  s += `<text x="${W - 60}" y="${H - 8}">l/a</text><text x="4" y="${H / 2}">μ</text><text x="4" y="${y(0) + 4}">0</text><text x="4" y="${y(yMax / 1.05) + 4}">${(yMax / 1.05).toFixed(2)}</text>`;
-  const tick = lMax > 2 ? Math.ceil(lMax / 2) : 1;
-  for (let l = -Math.floor(lMax / tick) * tick; l <= lMax; l += tick) s += `<text x="${x(l) - 4}" y="${H - 10}">${l}</text>`;
+  const twins = pts.filter((p) => p.twin), ref = twins.length ? twins : pts;
+  const W = 460, H = 220, L = 45, R = 10, T = 10, B = 30;
+  const xs = ref.map((p) => p.x).filter(Number.isFinite), ys = ref.flatMap((p) => [p.y - (p.u || 0), p.y + (p.u || 0)]).filter(Number.isFinite);
+  let x0 = Math.min(-0.5, ...xs), x1 = Math.max(0.5, ...xs), y0 = Math.min(0, ...ys), y1 = Math.max(0.6, ...ys);
+  const padX = 0.1 * (x1 - x0), padY = 0.1 * (y1 - y0); x0 -= padX; x1 += padX; y1 += padY;
+  const x = (v) => L + (v - x0) / (x1 - x0) * (W - L - R), y = (v) => H - B - (v - y0) / (y1 - y0) * (H - T - B);
+  let s = `<rect x="${L}" y="${T}" width="${W - L - R}" height="${H - T - B}" fill="none" stroke="#999"/>`;
+  for (const v of ticks(x0, x1, 6)) s += `<line x1="${x(v)}" x2="${x(v)}" y1="${H - B}" y2="${H - B + 4}" stroke="#333"/><text x="${x(v) - 8}" y="${H - B + 15}">${+v.toPrecision(3)}</text>`;
+  for (const v of ticks(y0, y1, 5)) s += `<line x1="${L - 4}" x2="${L}" y1="${y(v)}" y2="${y(v)}" stroke="#333"/><text x="4" y="${y(v) + 4}">${+v.toPrecision(3)}</text>`;
+  s += `<text x="${W - 70}" y="${H - 2}">l/a [1]</text><text x="${L + 4}" y="${T + 12}">μ [1]</text>`;
   for (const p of pts) {
-    const color = p.m === "mu_v" ? "#1565c0" : "#c62828";
-    if (p.twin) s += `<line x1="${x(p.x)}" x2="${x(p.x)}" y1="${y(p.y - p.u)}" y2="${y(p.y + p.u)}" stroke="${color}"/><circle class="twin" cx="${x(p.x)}" cy="${y(p.y)}" r="5" fill="none" stroke="${color}"/>`;
-    else s += `<circle class="student" cx="${x(p.x)}" cy="${y(p.y)}" r="3.5" fill="${color}"/>`;
+    const color = p.m === "mu_v" ? "#1565c0" : "#c62828", cx = x(Math.min(x1, Math.max(x0, p.x)));
+    if (p.twin) { s += `<line x1="${cx}" x2="${cx}" y1="${y(p.y - p.u)}" y2="${y(p.y + p.u)}" stroke="${color}"/><circle class="twin" cx="${cx}" cy="${y(p.y)}" r="5" fill="none" stroke="${color}"/>`; continue; }
+    if (p.y > y1 || p.y < y0 || p.x > x1 || p.x < x0) {
+      const cy = p.y > y1 ? T + 6 : p.y < y0 ? H - B - 6 : y(p.y), dir = p.y > y1 ? -1 : 1;
+      s += `<path class="student off-scale" d="M${cx - 5} ${cy - 4 * dir} L${cx + 5} ${cy - 4 * dir} L${cx} ${cy + 5 * dir} Z" fill="${color}"><title>${p.m} = ${p.y} (off the plot)</title></path>`;
+    } else s += `<circle class="student" cx="${cx}" cy="${y(p.y)}" r="3.5" fill="${color}"/>`;
   }
-  s += `<text x="50" y="24" fill="#1565c0">μv</text><text x="70" y="24" fill="#c62828">μT</text>`;
+  s += `<text x="${L + 60}" y="${T + 12}" fill="#1565c0">μv</text><text x="${L + 85}" y="${T + 12}" fill="#c62828">μT</text>`;
   svg.innerHTML = s;
 }
 
@@ -483,7 +499,7 @@ async function save() {
 }
 
 async function submit() {
-  const answers = Object.entries(lab.answers).map(([point, values]) => ({ point: Number(point), values }));
+  const answers = Object.entries(lab.answers).filter(([point]) => !lab.dropped[point]).map(([point, values]) => ({ point: Number(point), values }));
   const final = $("final").checked;
   $("submitted").dataset.done = "";
   try {
@@ -591,6 +607,7 @@ async function init() {
   $("apply").onclick = apply; $("apply-b").onclick = apply; $("record").onclick = record; $("set-strobe").onclick = setStrobe;
   $("answer-point").onchange = fillAnswers;
   $("check").onclick = check; $("nu-lookup").onclick = lookupNu;
+  $("reset").onclick = () => { if (!lab.session.exercise) openSession({ stand: lab.session.stand }); };  // practice: a fresh stand
   $("nu-copy").onclick = () => { for (const n of ["l_over_a", "c_over_a", "alpha_prime"]) $(`nu-${n}`).value = $(`ans-${n}`).value; }; $("show-reduction").onclick = showReduction; $("save").onclick = save; $("submit").onclick = submit;
   const t = location.hash.match(/teacher=([0-9a-f]+)/);
   if (t) { try { await teacher(t[1]); } catch (error) { $("session-info").textContent = `${error.field}: ${error.message}`; } document.body.dataset.ready = "yes"; return; }
