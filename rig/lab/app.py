@@ -78,6 +78,7 @@ STAND_DATA_SYMBOLS = {
 FRAME_S = 0.05  # real time between two frames of the live stream [s]
 RATIO_LIMITS = (0.1, 100.0)  # simulated time / real time of the live stream [1]
 MAX_SESSIONS = 1000
+SIMULATION_SLOTS = 2  # simulations (settle, gate, reduction) run at once; the others queue [1]
 MAX_POINTS = 200  # recorded points a session may hold (a submission lists each at most once)
 LOG = logging.getLogger("rig.lab")
 ERROR_CHARS = 400  # longest error text sent back
@@ -105,6 +106,9 @@ class Lab:
         self.sessions: dict[str, LabSession] = {}
         self.assigned: dict[str, tuple[str, Exercise]] = {}  # session id -> (student id, exercise)
         self.roster = None if classfile is None else Roster(self.store.folder, classfile)
+        # CPU-bound simulations beyond the cores only slow every request down (one interpreter
+        # lock): at most SIMULATION_SLOTS run at once, so that the quick requests keep their pace
+        self.simulations = threading.BoundedSemaphore(SIMULATION_SLOTS)
         self._lock = threading.Lock()
         self._loading = threading.Lock()
 
@@ -246,7 +250,8 @@ class Lab:
             with self._lock:
                 if ident in self.sessions:
                     return self.sessions[ident]
-            return self._load(ident)
+            with self.simulations:  # a restored session replays its points
+                return self._load(ident)
 
 
 def _state(lab: Lab, session: LabSession) -> dict:
@@ -407,7 +412,7 @@ def create_app(lab: Lab) -> Flask:
         if not data:
             raise ParameterError("settings", "missing", "settings and/or strobe_ratio")
         settings = rq.numbers(data, "settings", session.CONTROLS) if "settings" in data else None
-        with session.lock:
+        with session.lock, lab.simulations:
             if "strobe_ratio" in data:
                 if session.strobe() is None:
                     raise ParameterError("strobe_ratio", data["strobe_ratio"], "absent: this stand has no stroboscope")
@@ -437,7 +442,7 @@ def create_app(lab: Lab) -> Flask:
         exercise = lab.exercise_of(session)
         if exercise is not None and gate < exercise.min_gate_s:
             raise ParameterError("gate_time_s", gate, f"at least {exercise.min_gate_s:g} s in exercise {exercise.id}")
-        with session.lock:
+        with session.lock, lab.simulations:
             if len(session.outcomes) >= MAX_POINTS:
                 raise ParameterError("point", len(session.outcomes), f"at most {MAX_POINTS} recorded points a session")
             readings = session.record(gate)
