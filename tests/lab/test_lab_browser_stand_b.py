@@ -28,9 +28,13 @@ def _shown_reduction_b(driver) -> dict[int, dict[str, str]]:
 
 
 def _stand_data(driver) -> dict[str, float]:
-    rows = driver.find_elements(By.CSS_SELECTOR, "#stand-b-data tbody tr")
-    return {r.find_elements(By.TAG_NAME, "td")[0].get_attribute("textContent"):
-            float(r.find_elements(By.TAG_NAME, "td")[1].get_attribute("textContent").split()[0]) for r in rows}
+    """The stand data as shown (symbol, value, unit): {code name (tooltip): SI value}."""
+    units = {"mm": 1e-3, "m": 1.0}
+    data = {}
+    for row in driver.find_elements(By.CSS_SELECTOR, "#stand-b-data tbody tr"):
+        value, unit = row.find_elements(By.TAG_NAME, "td")[1].get_attribute("textContent").split()
+        data[row.get_attribute("title")] = float(value) * units[unit]
+    return data
 
 
 def _choose(driver, element_id: str, value: str) -> None:

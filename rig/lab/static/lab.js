@@ -297,9 +297,12 @@ function drawTraces(settle) {
   const maps = { speed: signed ? (w) => mid - (w / wMax) * (bottom - top) / 2 : (w) => bottom - (w / wMax) * (bottom - top),
                  load: (b) => mid - (b / bAbs) * (bottom - top) / 2 };
   g.strokeStyle = "#999"; g.strokeRect(40, top, c.width - 50, bottom - top);
-  g.fillStyle = "#333"; g.font = "11px sans-serif";
-  g.fillText(`ω [rad/s], ${signed ? "±" : "0.."}${wMax.toFixed(1)}; loads ±${bAbs.toPrecision(3)}`, 44, 22);
-  g.fillText(`t [s], 0..${tMax.toFixed(1)}`, c.width - 100, c.height - 6);
+  g.fillStyle = "#333"; g.font = "10px sans-serif"; g.strokeStyle = "#333";
+  for (const v of ticks(0, tMax, 6)) { g.beginPath(); g.moveTo(x(v), bottom); g.lineTo(x(v), bottom + 4); g.stroke(); g.fillText(String(+v.toPrecision(3)), x(v) - 6, bottom + 13); }
+  for (const v of ticks(signed ? -wMax : 0, wMax, 4)) { const yy = maps.speed(v); g.beginPath(); g.moveTo(36, yy); g.lineTo(40, yy); g.stroke(); g.fillText(String(+v.toPrecision(3)), 2, yy + 3); }
+  g.font = "11px sans-serif";
+  g.fillText(`ω [rad/s] (left axis); loads on ±${bAbs.toPrecision(3)} (N, N m)`, 44, 22);
+  g.fillText("t [s]", c.width - 40, c.height - 6);
   g.setLineDash([4, 3]); g.strokeStyle = "#aaa"; g.beginPath(); g.moveTo(x(settle), top); g.lineTo(x(settle), bottom); g.stroke(); g.setLineDash([]);
   let label = 50;
   for (const tr of traces) {
