@@ -89,7 +89,8 @@ def _known(data: Mapping[str, object], allowed: Iterable[str], prefix: str) -> N
         if key not in allowed:
             close = difflib.get_close_matches(str(key), allowed, n=1, cutoff=0.5)
             hint = f"; did you mean {close[0]!r}?" if close else ""
-            raise ParameterError(f"{prefix}{short(key)}", short(data[key]), f"no such field (fields: {', '.join(allowed)}){hint}")
+            raise ParameterError(f"{prefix}{short(key)}", short(data[key]),
+                                 f"no such field (fields: {', '.join(allowed)}){hint}")
 
 
 def required(data: Mapping[str, object], name: str) -> object:

@@ -69,7 +69,8 @@ class Roster:
                 self.secret = secrets.token_bytes(32)
                 _write_private(secret_path, self.secret.hex())
         except (OSError, ValueError) as error:
-            raise ParameterError("--state", str(self.folder), f"a folder the lab can read and write ({error})") from None
+            raise ParameterError("--state", str(self.folder),
+                                 f"a folder the lab can read and write ({error})") from None
         self.teacher_token = self._derive("teacher")
         roster, path = {}, self.folder / ROSTER_FILE
         if path.is_file():

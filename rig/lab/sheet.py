@@ -43,7 +43,8 @@ STAND_A = Sheet(
         ("rolling_point", "the rolling point l/a, c/a from i_k, eqs. (29)-(32)", ("l_over_a", "c_over_a")),
         ("lateral_force", "the lateral force F_y from dynamometer 10: F = (s - s0)/S at its lever, eq. (33)",
          ("F_y_N",)),
-        ("alpha_prime", "the track deformability alpha' = 10 mu (b/a)(v/w0)/R_x, eq. (21), at your mu", ("alpha_prime",)),
+        ("alpha_prime", "the track deformability alpha' = 10 mu (b/a)(v/w0)/R_x, eq. (21), at your mu",
+         ("alpha_prime",)),
         ("nu_lookup", "the nu lookups nu_T, nu_v, nu_0 at (l/a, c/a, alpha')", ("nu_T", "nu_v", "nu_0")),
         ("friction", "mu_v = F_y/(F_N nu_v), eq. (33), and mu_T from the moment balance, eq. (35)", ("mu_v", "mu_T")),
     ),
@@ -117,7 +118,8 @@ class Tolerance:
 
 def default_tolerances(sheet: Sheet) -> dict[str, Tolerance]:
     """The tolerance of each quantity of ``sheet`` when an exercise states none."""
-    return {name: Tolerance(DEFAULT_RELATIVE, DEFAULT_ABSOLUTE.get(name, 0.0)) for name in sheet.required + sheet.optional}
+    return {name: Tolerance(DEFAULT_RELATIVE, DEFAULT_ABSOLUTE.get(name, 0.0))
+            for name in sheet.required + sheet.optional}
 
 
 SLIPS = (
@@ -155,7 +157,7 @@ def judge(answers: Mapping[str, float], reduced: Mapping[str, float | None], she
             continue
         band = tolerances.get(name, Tolerance()).band(target)
         verdicts[name] = Verdict(value, target, band, abs(value - target) <= band)
-    steps = {key: (None if not any(n in verdicts for n in names) else all(verdicts[n].ok for n in names if n in verdicts))
+    steps = {key: (all(verdicts[n].ok for n in names if n in verdicts) if any(n in verdicts for n in names) else None)
              for key, _, names in sheet.steps}
     wrong_step = next(((key, text, names) for key, text, names in sheet.steps if steps[key] is False), None)
     sent_back = None

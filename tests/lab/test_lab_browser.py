@@ -95,7 +95,8 @@ def _shown_reduction(driver) -> dict[int, dict[str, float]]:
     rows = {}
     for row in driver.find_elements(By.CSS_SELECTOR, "#reduction tbody tr"):
         point = int(row.find_element(By.CSS_SELECTOR, "td").text)
-        rows[point] = {name: row.find_element(By.CSS_SELECTOR, f"td.red-{name}").get_attribute("data-value") for name in OUTPUTS}
+        rows[point] = {name: row.find_element(By.CSS_SELECTOR, f"td.red-{name}").get_attribute("data-value")
+                       for name in OUTPUTS}
     return rows
 
 

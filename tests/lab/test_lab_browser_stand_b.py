@@ -23,7 +23,8 @@ def _shown_reduction_b(driver) -> dict[int, dict[str, str]]:
     driver.find_element(By.ID, "show-reduction").click()
     _wait(driver, lambda d: d.find_element(By.ID, "reduction").is_displayed())
     return {int(row.find_element(By.CSS_SELECTOR, "td").text):
-            {name: row.find_element(By.CSS_SELECTOR, f"td.red-{name}").get_attribute("data-value") for name in OUTPUTS_B}
+            {name: row.find_element(By.CSS_SELECTOR, f"td.red-{name}").get_attribute("data-value")
+             for name in OUTPUTS_B}
             for row in driver.find_elements(By.CSS_SELECTOR, "#reduction tbody tr")}
 
 

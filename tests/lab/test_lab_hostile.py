@@ -12,6 +12,8 @@ import pytest
 
 from rig.lab import requests as rq
 from rig.lab.app import MAX_POINTS, Lab, create_app
+from rig.lab.exercises import ClassFile
+from tests.lab.conftest import EXAMPLE_CLASS
 
 BIG = 10**400  # a 401-digit integer: beyond a float
 NUMBER_TEXTS = ("1" + "0" * 400, "-" + "9" * 400, "1e400", "-1e999", "NaN", "Infinity", "1" * 5000)
@@ -28,15 +30,19 @@ def _nested_object(depth: int) -> bytes:
 
 @pytest.fixture(scope="module")
 def app(tmp_path_factory):
-    """A practice lab with one session of each stand (one recorded point each)."""
-    lab = Lab(tmp_path_factory.mktemp("lab-hostile"))
+    """A lab with the example class: a practice session of each stand and an exercise session of a
+    listed student (one recorded point each); requests go without a token or with a wrong one."""
+    lab = Lab(tmp_path_factory.mktemp("lab-hostile"), ClassFile.load(EXAMPLE_CLASS))
     client = create_app(lab).test_client()
     sids = []
     for stand in ("yoke", "disc_roller"):
         sid = client.post("/api/sessions", json={"stand": stand}).get_json()["id"]
         assert client.post(f"/api/sessions/{sid}/record", json={"gate_time_s": 0.5}).status_code == 200
         sids.append(sid)
-    return client, sids
+    token = {"X-Lab-Token": lab.roster.token_of("s1001")}
+    sid = client.post("/api/sessions", json={"stand": "yoke", "exercise": "A1"}, headers=token).get_json()["id"]
+    assert client.post(f"/api/sessions/{sid}/record", json={"gate_time_s": 1.0}, headers=token).status_code == 200
+    return client, sids + [sid]
 
 
 def _bodies(field_names: tuple[str, ...]) -> list[bytes]:
@@ -59,15 +65,17 @@ def _bodies(field_names: tuple[str, ...]) -> list[bytes]:
 def _requests(sids: list[str]) -> list[tuple[str, str, bytes | None]]:
     """(method, path, raw body) of every hostile request."""
     cases: list[tuple[str, str, bytes | None]] = []
-    posts = {"/api/sessions": ("stand", "student", "exercise", "token")}
+    posts = {"/api/sessions": ("stand", "student", "exercise", "token"), "/api/join": ("student", "join_code")}
     for sid in sids + ["0" * 16, "f" * 16, "../../etc/passwd", "x" * 3000, "%00", "..%2f..%2fstate"]:
         base = f"/api/sessions/{sid}"
         posts |= {f"{base}/controls": ("settings", "strobe_ratio"), f"{base}/record": ("gate_time_s",),
                   f"{base}/check": ("point", "answers"), f"{base}/save": ("x",),
-                  f"{base}/submit": ("answers", "final")}
-        for query in ("", "?ratio=" + "9" * 400, "?ratio=nan", "?ratio=-1", "?ratio=1e999", "?token=" + "a" * 5000):
-            cases.append(("GET", base + query, None))
-            cases.append(("GET", f"{base}/live{query}", None))
+                  f"{base}/submit": ("answers", "final"),
+                  f"{base}/nu": ("point", "l_over_a", "c_over_a", "alpha_prime")}
+        for query in ("", "?ratio=" + "9" * 400, "?ratio=nan", "?ratio=-1", "?ratio=1e999", "?token=" + "a" * 5000,
+                      "?token=../../state/class-secret"):
+            for tail in ("", "/live", "/log.h5", "/readings.csv"):
+                cases.append(("GET", f"{base}{tail}{query}", None))
     for path, names in posts.items():
         for raw in _bodies(names):
             cases.append(("POST", path, raw))
@@ -77,9 +85,14 @@ def _requests(sids: list[str]) -> list[tuple[str, str, bytes | None]]:
         cases.append(("POST", f"/api/sessions/{sid}/submit", json.dumps({"answers": [{"point": 0}] * 3000}).encode()))
         cases.append(("POST", f"/api/sessions/{sid}/check",
                       json.dumps({"point": BIG, "answers": {"l_over_a": 1}}, default=str).encode()))
-    for path in ("/static/../app.py", "/static/..%2f..%2fapp.py", "/static/%2e%2e/%2e%2e/state", "/static/vendor/../../x",
+        for values in ({"l_over_a": 1e308, "c_over_a": -1e308, "alpha_prime": 1e-308}, {"l_over_a": 0.3, "c_over_a": 0.0,
+                       "alpha_prime": 1e6}, {"l_over_a": "x", "c_over_a": None, "alpha_prime": []}):
+            cases.append(("POST", f"/api/sessions/{sid}/nu", json.dumps({"point": 0} | values).encode()))
+    for path in ("/static/../app.py", "/static/..%2f..%2fapp.py", "/static/%2e%2e/%2e%2e/state",
+                 "/static/vendor/../../x",
                  "/../../etc/passwd", "/api/grades.csv?token=" + "z" * 100, "/api/grades.csv", "/api/exercises",
-                 "/api/stands", "/api/class", "/api/sessions", "/static/" + "a/" * 2000):
+                 "/api/stands", "/api/class", "/api/me", "/api/me?token=" + "f" * 32, "/api/class?token=x",
+                 "/api/sessions", "/static/" + "a/" * 2000, "/static/vendor/katex/../../../app.py"):
         cases.append(("GET", path, None))
     return cases
 
