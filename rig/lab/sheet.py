@@ -53,10 +53,10 @@ STAND_A = Sheet(
 )
 STAND_B = Sheet(
     steps=(
-        ("rolling_point", "the rolling point: l/a from the handwheel (screw 19), c/a = e sin(sigma)/a, eq. (36); "
-         "in reverse running the chain's frame is mirrored (x -> -x): c/a = -e sin(sigma)/a", ("l_over_a", "c_over_a")),
+        ("rolling_point", "the rolling point: l/a from the handwheel (screw 19), c/a from the twist, eq. (36)",
+         ("l_over_a", "c_over_a")),
         ("pivoting_moment", "the forces from the recorder, F = (V - s0)/S with each channel's calibration, and "
-         "M_C = T_Mo + R_c F_T (reverse running: F_T and T_Mo change sign)", ("M_C_N_m",)),
+         "M_C = T_Mo + R_c F_T", ("M_C_N_m",)),
         ("alpha_prime", "the track deformability alpha' = 10 mu (b/a) R_c/R_r, eq. (21), at your mu", ("alpha_prime",)),
         ("nu_lookup", "the nu lookups nu_T, nu_v, nu_0 at (l/a, c/a, alpha')", ("nu_T", "nu_v", "nu_0")),
         ("friction", "mu_v = F_V/(F_N nu_v), eq. (33), mu_T = F_T/(F_N nu_T), eq. (27), mu_M = M_C/(a F_N nu_0), "
@@ -79,7 +79,7 @@ EQUATIONS = {
                     r"\dfrac{T_2 + F_y(\Delta h - c)}{F_N\,D},\ D = -(l - l_2)\,\nu_T - a\,\nu_0\ \text{(35)}",
     },
     "disc_roller": {
-        "rolling_point": r"l/a = l/a,\quad c = e \sin\sigma\ \text{(36; reverse: } c = -e\sin\sigma)",
+        "rolling_point": r"c = e \sin\sigma\quad\text{(36)}",
         "pivoting_moment": r"F = \dfrac{V - s_0}{S},\quad M_C = T_{Mo} + R_c\,F_T",
         "alpha_prime": r"\alpha' = 10\,\mu\,(b/a)\,\dfrac{R_c}{R_r}\quad\text{(21)}",
         "nu_lookup": r"(\nu_T, \nu_v, \nu_0) = \nu(l/a,\ c/a,\ \alpha')\ \text{at the load's } b/a",
