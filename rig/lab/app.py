@@ -308,7 +308,11 @@ def _answers(value: object, name: str, sheet: Sheet) -> dict[str, float]:
     if not isinstance(value, dict):
         raise ParameterError(name, rq.short(value), "a JSON object {output: number}")
     given = {key: v for key, v in value.items() if v is not None}  # an optional value left empty
-    checked = rq.numbers({name: given}, name, sheet.required + sheet.optional)
+    quantities = sheet.required + sheet.optional
+    checked = rq.numbers({name: given}, name, quantities + tuple(f"U95_{q}" for q in quantities))
+    for key, stated in checked.items():
+        if key.startswith("U95_") and not stated > 0.0:
+            raise ParameterError(f"{name}.{key}", stated, "a stated uncertainty > 0")
     for key in sheet.required:
         if key not in checked:
             raise ParameterError(f"{name}.{key}", "missing", "a number")

@@ -21,6 +21,7 @@ The teacher's file (TOML; example: rig/lab/examples/class.toml, described in doc
     [exercise.effects.bearing_friction]   # hidden effects besides the lab's own (parameters optional)
     [exercise.tolerance]               # per quantity: relative and/or absolute (default: rig.lab.sheet)
     mu_v = {relative = 0.02}
+    mu_T = {relative = 0.01, uncertainty = 1.0}   # or within 1 x the U95 the student states
     # deadline, attempts, checks: as in [class], for this exercise; min_gate_s: shortest gate [s]
 
 A student's instance draws mu and the run seed from HMAC-SHA-256 of (exercise id, student id)
@@ -58,7 +59,7 @@ FILE_KEYS = ("title", "class", "exercise")
 CLASS_KEYS = ("students", "join_code", "deadline", "attempts", "checks")
 RULE_KEYS = ("deadline", "attempts", "checks")
 EXERCISE_KEYS = ("id", "title", "stand", "mu", "free", "start", "effects", "tolerance", "min_gate_s") + RULE_KEYS
-TOLERANCE_KEYS = ("relative", "absolute")
+TOLERANCE_KEYS = ("relative", "absolute", "uncertainty")
 MAX_ATTEMPTS = 20
 MAX_CHECKS = 50
 STANDS = {"yoke": YokeStand, "disc_roller": DiscRollerStand}
@@ -146,10 +147,12 @@ def _tolerances(value: object, where: str, stand: str) -> dict[str, Tolerance]:
     validate.known_keys(f"{where} quantity", value, sheet.required + sheet.optional)
     for name, spec in value.items():
         if not isinstance(spec, dict) or not spec:
-            raise ParameterError(f"{where}.{name}", spec, "{relative = r} and/or {absolute = a}")
+            raise ParameterError(f"{where}.{name}", spec, "{relative = r}, {absolute = a} and/or {uncertainty = k}")
         validate.known_keys(f"{where}.{name} key", spec, TOLERANCE_KEYS)
-        tolerances[name] = Tolerance(validate.number(f"{where}.{name}.relative", spec.get("relative", 0.0), 0.0, 1.0),
-                                     validate.number(f"{where}.{name}.absolute", spec.get("absolute", 0.0), 0.0, 1e3))
+        tolerances[name] = Tolerance(
+            validate.number(f"{where}.{name}.relative", spec.get("relative", 0.0), 0.0, 1.0),
+            validate.number(f"{where}.{name}.absolute", spec.get("absolute", 0.0), 0.0, 1e3),
+            validate.number(f"{where}.{name}.uncertainty", spec.get("uncertainty", 0.0), 0.0, 10.0))
     return tolerances
 
 

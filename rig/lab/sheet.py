@@ -102,18 +102,33 @@ DEFAULT_ABSOLUTE = {"c_over_a": 0.01, "l_over_a": 0.01, "nu_T": 0.002, "nu_v": 0
 """Absolute tolerances where the value may be near zero [1]."""
 
 
+PLAUSIBLE = 3.0
+"""A student's stated U95 counts only within this factor of the reduction's U95 of the same readings [1]."""
+
+
 @dataclass(frozen=True)
 class Tolerance:
-    """A quantity's band: ``relative`` x |reduced value| or ``absolute`` (same unit), the larger."""
+    """A quantity's band: the largest of ``relative`` x |reduced value|, ``absolute`` (same unit)
+    and ``uncertainty`` x the U95 the student states for the value (0: not used). A stated U95
+    counts only when it is plausible - within a factor PLAUSIBLE of the reduction's own U95 - so
+    a student cannot widen the band by claiming a large uncertainty."""
 
     relative: float = DEFAULT_RELATIVE
     absolute: float = 0.0
+    uncertainty: float = 0.0
 
-    def band(self, reduced: float) -> float:
-        return max(self.relative * abs(reduced), self.absolute, ROUNDING * abs(reduced))
+    def band(self, reduced: float, stated: float | None = None) -> float:
+        extra = self.uncertainty * stated if self.uncertainty and stated is not None else 0.0
+        return max(self.relative * abs(reduced), self.absolute, ROUNDING * abs(reduced), extra)
 
     def public(self) -> dict:
-        return {"relative": self.relative, "absolute": self.absolute}
+        return {"relative": self.relative, "absolute": self.absolute, "uncertainty": self.uncertainty}
+
+
+def plausible(stated: float, u95: float | None) -> bool:
+    """Is a student's stated U95 within a factor PLAUSIBLE of the reduction's ``u95``?"""
+    return u95 is not None and math.isfinite(u95) and u95 > 0 and stated > 0 and \
+        1.0 / PLAUSIBLE <= stated / u95 <= PLAUSIBLE
 
 
 def default_tolerances(sheet: Sheet) -> dict[str, Tolerance]:
@@ -151,11 +166,18 @@ def judge(answers: Mapping[str, float], reduced: Mapping[str, float | None], she
     tolerances = default_tolerances(sheet) if tolerances is None else tolerances
     verdicts = {}
     for name, value in answers.items():
+        if name.startswith("U95_"):  # a stated uncertainty: judged with its value, below
+            continue
         target = reduced.get(name)
         if target is None:  # the reduction could not give this output: nothing to hold it against
             verdicts[name] = Verdict(value, None, None, False)
             continue
-        band = tolerances.get(name, Tolerance()).band(target)
+        tolerance = tolerances.get(name, Tolerance())
+        stated = answers.get(f"U95_{name}")
+        if tolerance.uncertainty and stated is not None and not plausible(stated, reduced.get(f"U95_{name}")):
+            verdicts[name] = Verdict(value, target, tolerance.band(target), False)  # an implausible claim fails
+            continue
+        band = tolerance.band(target, stated)
         verdicts[name] = Verdict(value, target, band, abs(value - target) <= band)
     steps = {key: (all(verdicts[n].ok for n in names if n in verdicts) if any(n in verdicts for n in names) else None)
              for key, _, names in sheet.steps}

@@ -185,3 +185,17 @@ def test_practice_stays_open_without_a_token(klass):
     status, response = _call(client, "POST", "/api/sessions", None, {"stand": "yoke"})
     assert status == 201
     assert _call(client, "GET", f"/api/sessions/{response.get_json()['id']}")[0] == 200
+
+
+def test_a_stated_uncertainty_is_a_positive_number_named_when_not(klass):
+    lab, client, tokens, folder = klass
+    status, response = _call(client, "POST", "/api/sessions", None, {"stand": "yoke"})
+    sid = response.get_json()["id"]
+    assert _call(client, "POST", f"/api/sessions/{sid}/record", None, {"gate_time_s": 0.5})[0] == 200
+    for bad in (-0.01, 0.0, "x"):
+        status, response = _call(client, "POST", f"/api/sessions/{sid}/check", None,
+                                 {"point": 0, "answers": WRONG | {"U95_mu_T": bad}})
+        assert status == 400 and response.get_json()["field"] == "answers.U95_mu_T"
+    status, response = _call(client, "POST", f"/api/sessions/{sid}/check", None,
+                             {"point": 0, "answers": WRONG | {"U95_mu_T": 0.01}})
+    assert status == 200 and "U95_mu_T" not in response.get_json()["values"]

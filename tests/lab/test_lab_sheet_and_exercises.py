@@ -128,3 +128,15 @@ def test_student_ids_and_the_grade_book():
     assert lines[1:] == [f"s1,A1,1,{t},False,0,mu_v,0.4,0.41,0.02,0.405,False",
                          f"s1,A1,2,{t},True,0,mu_v,0.4,0.41,0.02,0.405,True",
                          f"s2,A1,1,{t},True,0,mu_v,0.4,0.41,0.02,0.405,True"]
+
+
+def test_a_tolerance_of_k_times_the_students_stated_uncertainty_counts_only_when_the_claim_is_plausible():
+    tolerances = default_tolerances(STAND_A) | {"mu_T": Tolerance(0.01, 0.0, 2.0)}
+    off = RIGHT | {"mu_T": REDUCED["mu_T"] + 0.02}  # 5 % off: outside 1 %
+    assert not judge(off, REDUCED, STAND_A, tolerances)["passed"]
+    # stated U95 = 0.012 (the reduction's 0.015 within a factor 3): band 2 x 0.012 = 0.024 holds 0.02
+    assert judge(off | {"U95_mu_T": 0.012}, REDUCED, STAND_A, tolerances)["passed"]
+    # a claim of 0.2 (13 x the reduction's U95) widens nothing: the value fails
+    assert not judge(off | {"U95_mu_T": 0.2}, REDUCED, STAND_A, tolerances)["passed"]
+    # without k in the exercise, a stated U95 changes nothing
+    assert not judge(off | {"U95_mu_T": 0.012}, REDUCED)["passed"]

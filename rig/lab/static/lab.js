@@ -167,7 +167,8 @@ async function enter(state) {
 function showRules(ex) {
   // an exercise's rules and what the student has used of them
   if (!ex) { $("rules").textContent = ""; return; }
-  const tol = Object.entries(ex.tolerance).map(([n, t]) => `${n} ±${t.relative ? `${+(t.relative * 100).toPrecision(3)} %` : ""}${t.relative && t.absolute ? " or " : ""}${t.absolute ? `${t.absolute}` : ""}`).join(", ");
+  const tol = Object.entries(ex.tolerance).map(([n, t]) => `${n} ±` + [t.relative ? `${+(t.relative * 100).toPrecision(3)} %` : "", t.absolute ? `${t.absolute}` : "",
+    t.uncertainty ? `${t.uncertainty} × your U95` : ""].filter(Boolean).join(" or ")).join(", ");
   $("rules").innerHTML = `Checks left: <b id="checks-left">${ex.checks_left}</b> of ${ex.checks} · attempts used: <b id="attempts-used">${ex.attempts_used}</b> of ${ex.attempts}` +
     (ex.deadline ? ` · deadline ${ex.deadline}` : "") + (ex.min_gate_s ? ` · gate at least ${ex.min_gate_s} s` : "") +
     (ex.final ? " · <b>final submission made</b>" : "") + `<br><small>tolerances: ${tol}</small>`;
@@ -179,7 +180,7 @@ function showRules(ex) {
 function fillAnswers() {
   // the values the student last checked for the chosen point (kept by the server, also across a restart)
   const given = lab.answers[$("answer-point").value] || {};
-  for (const name of outputs()) $(`ans-${name}`).value = given[name] === undefined ? "" : given[name];
+  for (const input of document.querySelectorAll("#answer-inputs input[id^=ans-]")) { const v = given[input.id.slice(4)]; input.value = v === undefined ? "" : v; }
 }
 
 // TeX rendered by the vendored KaTeX (static/vendor/katex); plain text if it failed to load
@@ -192,7 +193,8 @@ function buildSheet() {
   $("points").tHead.innerHTML = "<tr><th>point</th>" + stand().columns.map(([h]) => `<th>${h}</th>`).join("") + "<th>drop</th></tr>";
   $("answer-inputs").innerHTML = `<table id="steps"><tbody>` + spec.steps.map((st, k) =>
     `<tr id="step-${st.key}" data-ok=""><th>${k + 1}. ${st.text}</th><td class="tex">${tex(st.tex)}</td><td>` +
-    st.quantities.map((q) => `<label>${tex(q.symbol)}${q.unit === "1" ? "" : ` [${q.unit}]`} <input id="ans-${q.name}" type="number" step="any" title="${q.name}"></label>`).join(" ") +
+    st.quantities.map((q) => `<label>${tex(q.symbol)}${q.unit === "1" ? "" : ` [${q.unit}]`} <input id="ans-${q.name}" type="number" step="any" title="${q.name}"></label>` +
+      (stated(q.name) ? ` <label>${tex(`U_{95}(${q.symbol})`)} <input id="ans-U95_${q.name}" type="number" step="any" title="your U95 of ${q.name}"></label>` : "")).join(" ") +
     "</td></tr>").join("") + "</tbody></table>";
   $("optional-note").textContent = spec.optional.join(", ");
   $("nu-chart").innerHTML = ""; $("nu-values").textContent = "";
@@ -411,9 +413,12 @@ function addReadings(r) {
 
 // ------------------------------------------------------------------------------------ sheet
 
+// an exercise whose tolerance of a quantity is a multiple of the student's own stated U95 asks for it
+const stated = (name) => { const t = lab.session.exercise && lab.session.exercise.tolerance[name]; return !!(t && t.uncertainty); };
+
 function answersOf() {
   const answers = {};
-  for (const name of outputs()) { const v = $(`ans-${name}`).value; if (v !== "") answers[name] = Number(v); }
+  for (const input of document.querySelectorAll("#answer-inputs input[id^=ans-]")) if (input.value !== "") answers[input.id.slice(4)] = Number(input.value);
   return answers;
 }
 
