@@ -42,7 +42,7 @@ def number(
         raise error(name, value, f"a real number in {_interval(lo, hi, lo_open, hi_open)}")
     try:
         x = float(value)  # type: ignore[arg-type]
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):  # OverflowError: an int beyond a float's range
         raise error(name, value, f"a real number in {_interval(lo, hi, lo_open, hi_open)}") from None
     if math.isnan(x) or (math.isinf(x) and not allow_inf):
         raise error(name, value, f"a finite number in {_interval(lo, hi, lo_open, hi_open)}")

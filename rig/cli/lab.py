@@ -25,8 +25,9 @@ def add_parser(subparsers) -> None:
     parser.add_argument("--port", type=int, default=DEFAULT_PORT,
                         help=f"port (default: {DEFAULT_PORT}; 0: any free port)")
     parser.add_argument("--no-browser", action="store_true", help="do not open the page in the default browser")
-    parser.add_argument("--exercises", type=Path, default=None, metavar="FILE",
-                        help="a teacher's exercise file (TOML, docs/lab.md)")
+    parser.add_argument("--class", "--exercises", dest="classfile", type=Path, default=None, metavar="FILE",
+                        help="a teacher's class file (TOML, docs/lab.md): students or a join code, exercises, "
+                             "deadlines, attempts, tolerances; prints the teacher's link")
     parser.add_argument("-o", "--output", type=Path, default=Path("lab-sessions"), metavar="DIR",
                         help="folder of saved sessions (DIR/<session>/log.h5; default: ./lab-sessions)")
     parser.add_argument("--state", type=Path, default=None, metavar="DIR",
@@ -53,14 +54,21 @@ def main(args) -> int:
 
     logging.getLogger("werkzeug").setLevel(logging.WARNING)  # no line per request on the console
     port = validate.integer("--port", args.port, 0, 65535)
-    classfile = None if args.exercises is None else ClassFile.load(args.exercises)
-    app = create_app(Lab(args.output, classfile, args.state))
+    classfile = None if args.classfile is None else ClassFile.load(args.classfile)
+    lab = Lab(args.output, classfile, args.state)
+    app = create_app(lab)
     try:
         server = make_server(args.host, port, app, threaded=True)
     except (OSError, SystemExit) as error:  # werkzeug reports a taken port by printing and exiting
         raise ParameterError("--port", port, f"a free port on {args.host} ({error})") from None
     url = f"http://{args.host}:{server.server_port}/"
     print(f"rig lab: serving {url} (Ctrl-C stops)", flush=True)
+    if lab.roster is not None:
+        print(f"rig lab: teacher's link {url}#teacher={lab.roster.teacher_token} (keep it secret; also in "
+              f"{lab.store.folder / 'teacher-token'}); students' tokens: {lab.store.folder / 'tokens.csv'}"
+              + ("" if classfile.join_code is None else f"; join code: {classfile.join_code}"), flush=True)
+        threading.Thread(target=lab.prepare, args=(lambda line: print(f"rig lab: {line}", flush=True),),
+                         daemon=True).start()
     if not args.no_browser:
         threading.Timer(0.5, webbrowser.open, (url,)).start()
     server.serve_forever()  # returns on Ctrl-C (werkzeug catches KeyboardInterrupt and closes the socket)

@@ -38,6 +38,7 @@ from rig.lab.scene_text import stand_scene
 from rig.logbook import LogWriter, RunMetadata, utc_timestamp
 from rig.scenes.load import parse_scene
 from rig.stands.base import PointOutcome, SettingSpec
+from rig.stands.contact_law import LawCoefficients
 from rig.stands.disc_roller import parameters as stand_b
 from rig.stands.disc_roller.instruments import CHANNELS as STAND_B_CHANNELS
 from rig.stands.yoke import integration
@@ -121,6 +122,7 @@ class LabSession:
         self.outcomes: list[PointOutcome] = []
         self.points: list[dict] = []  # per recorded point: settings, previous, gate_time_s (replayed by restore)
         self.answers: dict[int, dict[str, float]] = {}  # the values the student last checked, per point
+        self.checks: list[dict] = []  # the log of Checks in an exercise: time_utc, point, passed, step
         self.transient: Transient | None = None
         self._point = None
         self._previous: dict[str, float] | None = None  # what self._point started from
@@ -241,6 +243,24 @@ class LabSession:
         truth = self.outcomes[index].truth
         return {name: truth[name].value for name in self.TRUTH if name in truth}
 
+    def coefficients(self, index: int):
+        """(b/a [1], the contact law as the reduction asks it: coefficients(l/a, c/a, alpha') ->
+        (nu_T, nu_v, nu_0)) at recorded point ``index``'s load: the lab sheet's nu lookup."""
+        raise NotImplementedError
+
+    def nu_lookup(self, index: int, l_over_a: float, c_over_a: float, alpha_prime: float) -> dict:
+        """nu_T, nu_v, nu_0 [1] of the contact law at point ``index``'s b/a and (l/a, c/a, alpha')
+        ([Koziarski] eqs. (24)-(26)'s coefficients; OutsideModelDomain, a named ParameterError,
+        outside the law's table), with the curve of each over alpha' across the table's range."""
+        b_over_a, law = self.coefficients(index)
+        nu_t, nu_v, nu_0 = law(l_over_a, c_over_a, alpha_prime)
+        lo, hi = law.domain.alpha
+        alphas = np.geomspace(max(lo, 1e-3 * hi), hi, 41)
+        curve = np.array([law(l_over_a, c_over_a, float(x)) for x in alphas], dtype=float)
+        return {"b_over_a": b_over_a, "alpha_range": [lo, hi], "nu_T": nu_t, "nu_v": nu_v, "nu_0": nu_0,
+                "curve": {"alpha_prime": alphas.tolist(), "nu_T": curve[:, 0].tolist(), "nu_v": curve[:, 1].tolist(),
+                          "nu_0": curve[:, 2].tolist()}}
+
     def save(self, folder: Path) -> Path:
         """Write the session as ``folder/log.h5`` (the format of ``rig run``; ``rig reduce`` reads it)."""
         if not self.outcomes:
@@ -254,7 +274,7 @@ class LabSession:
         """Everything needed to rebuild this session (JSON-able; hidden values included: server side only)."""
         return {"format": STATE_FORMAT, "id": self.id, "stand": self.STAND, **self.inputs, "created": self.created,
                 "settings": self.settings, "running": self.running, "strobe_ratio": self.strobe_ratio,
-                "points": self.points, "answers": {str(k): v for k, v in self.answers.items()},
+                "points": self.points, "answers": {str(k): v for k, v in self.answers.items()}, "checks": self.checks,
                 "pending": None if self._point is None else {"previous": self._previous},
                 "version": self.version}
 
@@ -272,7 +292,7 @@ class StandASession(LabSession):
         "1", -1.0, 1.0, "+1: stand A's model runs forward only (docs/stand-a.md section 2, 'rolling direction': "
         "wheel 1 never reverses and the contact uses |v|, so a reversed drive would give wrong numbers, not a "
         "mirrored stand); stand B runs both ways", (1.0,))}
-    SHOWN = ("i_k", "l_over_a", "c_over_a", "nu_T", "nu_v", "mu_v", "mu_T")
+    SHOWN = ("i_k", "l_over_a", "c_over_a", "F_y_N", "alpha_prime", "nu_T", "nu_v", "nu_0", "mu_v", "mu_T")
     TRUTH = ("mu", "l_over_a", "c_over_a", "i_k")
     TRACES = {"omega_1": "rad/s", "omega_2": "rad/s", "brake_moment": "N m"}
 
@@ -293,6 +313,13 @@ class StandASession(LabSession):
         series = {"omega_1": np.asarray(train.omega_1(t, y), dtype=float), "omega_2": np.asarray(y[2], dtype=float),
                   "brake_moment": np.asarray(train.brake_moment(t, y), dtype=float)}
         return Transient(settle_s, t, series, np.asarray(theta_1), np.asarray(theta_2))
+
+    def coefficients(self, index: int):
+        settings = self.outcomes[index].record.settings
+        geometry = self.stand.params.geometry_at(settings["delta_h"].value)
+        b_over_a = geometry.b_over_a(settings["normal_force"].value)
+        law, domain = self.stand.law(b_over_a, geometry)
+        return b_over_a, LawCoefficients(law, domain)
 
     def strobe(self) -> dict:
         """Disc 14 as the operator sees it: flash instants [s], the apparent position of its marks
@@ -357,9 +384,13 @@ class StandBSession(LabSession):
                                  "the lab keeps |c/a| <= 2.6, inside the contact table (|c/a| <= 3.49), so that the "
                                  "reduction's perturbed inputs stay in it too"),
     }
-    SHOWN = ("l_over_a", "c_over_a", "M_C_N_m", "nu_T", "nu_v", "nu_0", "mu_v", "mu_T", "mu_M")
+    SHOWN = ("l_over_a", "c_over_a", "M_C_N_m", "alpha_prime", "nu_T", "nu_v", "nu_0", "mu_v", "mu_T", "mu_M")
     TRUTH = ("mu", "l_over_a", "c_over_a", "M_C")
     TRACES = {"roller_speed": "rad/s", "disc_speed": "rad/s", "F_T": "N", "F_V": "N", "T_Mo": "N m"}
+
+    def coefficients(self, index: int):
+        b_over_a = self.stand.params.b_over_a(self.outcomes[index].record.settings["normal_force"].value)
+        return b_over_a, LawCoefficients(self.stand.law(b_over_a), self.stand.law_domain(b_over_a))
 
     def check_settings(self, settings: Mapping[str, float]) -> dict[str, float]:
         stand_b.point_settings(settings)
@@ -416,5 +447,6 @@ def restore(state: Mapping[str, object]) -> LabSession:
         session._settle(session.settings)
     session.strobe_ratio = state["strobe_ratio"]
     session.answers = {int(k): dict(v) for k, v in state["answers"].items()}
+    session.checks = list(state.get("checks", []))
     session.version = state["version"]
     return session

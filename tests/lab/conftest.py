@@ -27,6 +27,7 @@ import pytest
 CHROMIUM = Path("/usr/bin/chromium")
 CHROMEDRIVER = Path("/usr/bin/chromedriver")
 EXAMPLE_CLASS = Path(__file__).resolve().parents[2] / "rig" / "lab" / "examples" / "class.toml"
+JOIN_CODE = "rolling-2026"  # the example class's
 START_LIMIT_S = 10.0  # acceptance 1: the page is served within 10 s of start
 WARM_UP_S = 300.0  # the first settle may build the contact table
 CHROMIUM_FLAGS = ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
@@ -41,17 +42,34 @@ class LabServer:
         self.process, self.url, self.out_dir, self.start_s = process, url, out_dir, start_s
 
     def request(self, method: str, path: str, body: object = None, raw: bytes | None = None,
-                timeout_s: float = 30.0) -> tuple[int, object]:
-        """(status, parsed JSON or text) of one request."""
+                timeout_s: float = 30.0, token: str | None = None) -> tuple[int, object]:
+        """(status, parsed JSON or text) of one request (with the class ``token``, if given)."""
         data = raw if raw is not None else (None if body is None else json.dumps(body).encode())
-        req = urllib.request.Request(self.url + path.lstrip("/"), data=data, method=method,
-                                     headers={"Content-Type": "application/json"})
+        headers = {"Content-Type": "application/json"} | ({} if token is None else {"X-Lab-Token": token})
+        req = urllib.request.Request(self.url + path.lstrip("/"), data=data, method=method, headers=headers)
         try:
             with urllib.request.urlopen(req, timeout=timeout_s) as response:
                 status, text, kind = response.status, response.read().decode(), response.headers.get_content_type()
         except urllib.error.HTTPError as error:
             status, text, kind = error.code, error.read().decode(), error.headers.get_content_type()
         return status, json.loads(text) if kind == "application/json" else text
+
+    def join(self, student: str) -> str:
+        """A token for ``student``, joined with the example class's join code."""
+        status, answer = self.request("POST", "api/join", {"student": student, "join_code": JOIN_CODE})
+        assert status == 201, answer
+        return answer["token"]
+
+    @property
+    def state_dir(self) -> Path:
+        return self.out_dir / "state"
+
+    def teacher_token(self) -> str:
+        return (self.state_dir / "teacher-token").read_text().strip()
+
+    def secret(self) -> bytes:
+        """The class's secret (the hidden values derive from it)."""
+        return bytes.fromhex((self.state_dir / "class-secret").read_text().strip())
 
     def stop(self) -> None:
         """Stop the server as Ctrl-C does."""

@@ -16,6 +16,7 @@ GOOD_SETTINGS = {"brake_setpoint_N_m": 0.5, "normal_force_N": 96.2, "delta_h_m":
 GOOD_ANSWERS = {"l_over_a": 0.1, "c_over_a": 0.0, "mu_v": 0.4, "mu_T": 0.4}
 GOOD_SETTINGS_B = {"normal_force_N": 36.0, "l_m": 0.01, "sigma_rad": 0.0, "speed_step": 1.0, "direction": 1.0}
 GOOD_ANSWERS_B = {"l_over_a": 2.5, "c_over_a": 0.0, "mu_v": 0.7}
+TOKENS: dict[str, str] = {}  # session id -> its student's token
 BAD_VALUES = ("text", None, True, [1], {"x": 1}, float("nan"), float("inf"), -float("inf"), 1e300, -1e300)
 
 
@@ -39,10 +40,12 @@ def session_b(lab_server) -> str:
 
 @pytest.fixture(scope="module")
 def exercise_session(lab_server) -> str:
-    """A session of exercise A1 with one recorded point."""
-    status, state = lab_server.request("POST", "api/sessions", {"stand": "yoke", "exercise": "A1", "student": "s-bad"})
+    """A session of exercise A1 with one recorded point (its student's token: TOKENS[id])."""
+    token = lab_server.join("s-bad")
+    status, state = lab_server.request("POST", "api/sessions", {"stand": "yoke", "exercise": "A1"}, token=token)
     assert status == 201
-    assert lab_server.request("POST", f"api/sessions/{state['id']}/record", {"gate_time_s": 1.0})[0] == 200
+    assert lab_server.request("POST", f"api/sessions/{state['id']}/record", {"gate_time_s": 1.0}, token=token)[0] == 200
+    TOKENS[state["id"]] = token
     return state["id"]
 
 
@@ -55,6 +58,8 @@ def _malformed(sid: str, esid: str) -> list[tuple[str, str, object, bytes | None
         cases.append(("POST", "api/sessions", {"stand": stand}, None))
     cases += [("POST", "api/sessions", {}, None), ("POST", "api/sessions", {"stand": "yoke", "colour": 1}, None),
               ("POST", "api/sessions", {"stand": "yoke", "exercise": "A9", "student": "s1"}, None),
+              ("POST", "api/join", {"student": "no spaces", "join_code": "rolling-2026"}, None),
+              ("POST", "api/join", {"student": "s9", "join_code": "wrong"}, None),
               ("POST", "api/sessions", {"stand": "yoke", "exercise": "A1"}, None),
               ("POST", "api/sessions", {"stand": "yoke", "exercise": "A1", "student": "no spaces"}, None),
               ("POST", "api/sessions", {"stand": "yoke", "exercise": "A1", "student": 7}, None)]
@@ -150,7 +155,7 @@ def test_200_malformed_requests_get_4xx_naming_the_field_and_the_server_still_an
                                                                                                       "session"), where
     status, state = lab_server.request("GET", f"api/sessions/{session}")
     assert status == 200 and len(state["readings"]) == 1
-    assert lab_server.request("GET", f"api/sessions/{exercise_session}")[0] == 200
+    assert lab_server.request("GET", f"api/sessions/{exercise_session}", token=TOKENS[exercise_session])[0] == 200
     status, state = lab_server.request("GET", f"api/sessions/{session_b}")
     assert status == 200 and len(state["readings"]) == 1 and state["settings"] == GOOD_SETTINGS_B
     assert lab_server.request("GET", "")[0] == 200
@@ -176,46 +181,55 @@ def test_errors_name_the_exact_field(lab_server, session):
 
 def test_hidden_values_are_not_sent_before_submission(lab_server):
     student = "s-hidden"
-    mu, _ = ClassFile.load(EXAMPLE_CLASS).get("A2").draw(student)
-    status, state = lab_server.request("POST", "api/sessions", {"stand": "yoke", "exercise": "A2", "student": student})
+    token = lab_server.join(student)
+    mu, _ = ClassFile.load(EXAMPLE_CLASS).get("A2").draw(student, lab_server.secret())
+    status, state = lab_server.request("POST", "api/sessions", {"stand": "yoke", "exercise": "A2"}, token=token)
     assert status == 201
     sid = state["id"]
-    lab_server.request("POST", f"api/sessions/{sid}/controls", {"settings": {"brake_setpoint_N_m": 0.6}})
+    lab_server.request("POST", f"api/sessions/{sid}/controls", {"settings": {"brake_setpoint_N_m": 0.6}}, token=token)
     texts = [json.dumps(state), json.dumps(lab_server.request("POST", f"api/sessions/{sid}/record",
-                                                              {"gate_time_s": 1.0})[1]),
-             json.dumps(lab_server.request("POST", f"api/sessions/{sid}/check", {"point": 0, "answers": GOOD_ANSWERS})[1]),
-             json.dumps(lab_server.request("GET", f"api/sessions/{sid}")[1]),
+                                                              {"gate_time_s": 1.0}, token=token)[1]),
+             json.dumps(lab_server.request("POST", f"api/sessions/{sid}/check", {"point": 0, "answers": GOOD_ANSWERS},
+                                           token=token)[1]),
+             json.dumps(lab_server.request("GET", f"api/sessions/{sid}", token=token)[1]),
              json.dumps(lab_server.request("GET", "api/exercises")[1]),
-             lab_server.request("GET", f"api/sessions/{sid}/live?ratio=100")[1]]
+             lab_server.request("GET", f"api/sessions/{sid}/live?ratio=100", token=token)[1],
+             (lab_server.state_dir / f"{sid}.json").read_text()]
     for text in texts:
         assert repr(mu) not in text and f"{mu:.6f}"[:7] not in text
-        assert "bearing_friction" not in text and "true_" not in text and '"mu"' not in text
-    assert lab_server.request("GET", f"api/sessions/{sid}")[1]["reduced"] == []
+        assert "true_" not in text and '"mu": 0' not in text
+    for text in texts[:-1]:
+        assert "bearing_friction" not in text and '"mu"' not in text
+    assert lab_server.request("GET", f"api/sessions/{sid}", token=token)[1]["reduced"] == []
     verdict = json.loads(texts[2])
-    assert {v["reduced"] for v in verdict["values"].values()} == {None} and verdict["sent_back_to"]
+    assert all(set(v) == {"entered"} for v in verdict["values"].values()) and verdict["sent_back_to"]
     status, answer = lab_server.request("POST", f"api/sessions/{sid}/submit",
-                                        {"answers": [{"point": 0, "values": GOOD_ANSWERS}]})
+                                        {"answers": [{"point": 0, "values": GOOD_ANSWERS}], "final": True}, token=token)
     assert status == 200 and answer["results"][0]["truth"]["mu"] == mu
-    assert [row["point"] for row in lab_server.request("GET", f"api/sessions/{sid}")[1]["reduced"]] == [0]
+    assert [row["point"] for row in lab_server.request("GET", f"api/sessions/{sid}", token=token)[1]["reduced"]] == [0]
 
 
 def test_stand_b_hidden_values_are_not_sent_before_submission(lab_server):
     student = "s-hidden-b"
-    mu, _ = ClassFile.load(EXAMPLE_CLASS).get("B1").draw(student)
-    status, state = lab_server.request("POST", "api/sessions", {"stand": "disc_roller", "exercise": "B1",
-                                                                "student": student})
+    token = lab_server.join(student)
+    mu, _ = ClassFile.load(EXAMPLE_CLASS).get("B1").draw(student, lab_server.secret())
+    status, state = lab_server.request("POST", "api/sessions", {"stand": "disc_roller", "exercise": "B1"}, token=token)
     assert status == 201
     sid = state["id"]
+
+    def ask(method, path, body=None):
+        return lab_server.request(method, path, body, token=token)[1]
+
     texts = [json.dumps(state),
-             json.dumps(lab_server.request("POST", f"api/sessions/{sid}/controls", {"settings": {"l_m": -0.01}})[1]),
-             json.dumps(lab_server.request("POST", f"api/sessions/{sid}/record", {"gate_time_s": 1.0})[1]),
-             json.dumps(lab_server.request("POST", f"api/sessions/{sid}/check", {"point": 0, "answers": GOOD_ANSWERS_B})[1]),
-             json.dumps(lab_server.request("GET", f"api/sessions/{sid}")[1]),
-             lab_server.request("GET", f"api/sessions/{sid}/live?ratio=100")[1]]
+             json.dumps(ask("POST", f"api/sessions/{sid}/controls", {"settings": {"l_m": -0.01}})),
+             json.dumps(ask("POST", f"api/sessions/{sid}/record", {"gate_time_s": 1.0})),
+             json.dumps(ask("POST", f"api/sessions/{sid}/check", {"point": 0, "answers": GOOD_ANSWERS_B})),
+             json.dumps(ask("GET", f"api/sessions/{sid}")),
+             ask("GET", f"api/sessions/{sid}/live?ratio=100")]
     for text in texts:
         assert repr(mu) not in text and f"{mu:.6f}"[:7] not in text
         assert "law_mu_range" not in text and "true_" not in text and '"mu"' not in text
-    assert lab_server.request("GET", f"api/sessions/{sid}")[1]["reduced"] == []
+    assert ask("GET", f"api/sessions/{sid}")["reduced"] == []
 
 
 def test_concurrent_requests_on_one_session_keep_it_consistent(lab_server):

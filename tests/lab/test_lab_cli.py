@@ -38,3 +38,30 @@ def test_a_port_in_use_is_a_named_error(tmp_path):
         out, err = process.communicate(timeout=30)
     assert process.returncode == 2
     assert "--port" in err and "Traceback" not in err
+
+
+def test_a_class_prints_the_teachers_link_and_prepares_its_exercises(tmp_path):
+    from tests.lab.conftest import EXAMPLE_CLASS
+
+    process = _start("--port", "0", "-o", str(tmp_path), "--class", str(EXAMPLE_CLASS))
+    try:
+        lines = [process.stdout.readline() for _ in range(2)]
+        token = (tmp_path / "state" / "teacher-token").read_text().strip()
+        assert lines[1].startswith("rig lab: teacher's link http://") and f"#teacher={token}" in lines[1]
+        assert "join code: rolling-2026" in lines[1] and str(tmp_path / "state" / "tokens.csv") in lines[1]
+        progress = [""]
+        while progress[-1] != "rig lab: every exercise ready\n":  # one line per exercise
+            progress.append(process.stdout.readline())
+            assert progress[-1], progress  # not the end of the output before every exercise is ready
+        assert sum(line.startswith("rig lab: exercise ") and "ready" in line for line in progress) == 3
+    finally:
+        process.send_signal(signal.SIGINT)
+        process.communicate(timeout=30)
+
+
+def test_a_bad_class_file_is_one_line_and_exit_2(tmp_path):
+    bad = tmp_path / "class.toml"
+    bad.write_text('[[exercise]]\nid = "A"\ntitle = "t"\nstand = "yoke"\nmu = [0.3, 0.4]\nfree = []\n')
+    process = _start("--port", "0", "-o", str(tmp_path), "--class", str(bad))
+    out, err = process.communicate(timeout=60)
+    assert process.returncode == 2 and "class" in err and "Traceback" not in err

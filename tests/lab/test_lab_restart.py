@@ -4,6 +4,7 @@ their session - its points, reduction and checked answers - in a real headless C
 from __future__ import annotations
 
 import json
+import re
 
 from selenium.webdriver.common.by import By
 
@@ -34,18 +35,21 @@ def test_sessions_of_both_stands_survive_a_server_restart(tmp_path, browser):
         reduced = server.request("GET", f"api/sessions/{sid_b}")[1]["reduced"][0]["values"]
         answers = {name: _significant(reduced[name]) for name in OUTPUTS_B}
         assert _check(browser, 0, answers, OUTPUTS_B) == "passed"
-        sid_a = server.request("POST", "api/sessions", {"stand": "yoke", "exercise": "A1", "student": "s-restart"})[1]["id"]
-        assert server.request("POST", f"api/sessions/{sid_a}/record", {"gate_time_s": 1.0})[0] == 200
-        before = {sid: server.request("GET", f"api/sessions/{sid}")[1] for sid in (sid_a, sid_b)}
+        token = server.join("s-restart")
+        sid_a = server.request("POST", "api/sessions", {"stand": "yoke", "exercise": "A1"}, token=token)[1]["id"]
+        assert server.request("POST", f"api/sessions/{sid_a}/record", {"gate_time_s": 1.0}, token=token)[0] == 200
+        before = {sid: server.request("GET", f"api/sessions/{sid}", token=token)[1] for sid in (sid_a, sid_b)}
     finally:
         server.stop()
     files = sorted(p.name for p in state_dir.iterdir())
-    assert {f"{sid_a}.json", f"{sid_b}.json"} <= set(files) and all(name.endswith(".json") for name in files)
+    assert {f"{sid_a}.json", f"{sid_b}.json"} <= set(files)
+    class_files = {"class-secret", "teacher-token", "tokens.csv", "roster.json"}
+    assert class_files <= set(files) and all(re.fullmatch(r"[0-9a-f]{16}\.json", n) for n in set(files) - class_files)
     assert json.loads((state_dir / f"{sid_b}.json").read_text())["answers"] == {"0": answers}
 
     server = start_server(out, *options)
     try:
-        after_a = server.request("GET", f"api/sessions/{sid_a}")[1]
+        after_a = server.request("GET", f"api/sessions/{sid_a}", token=token)[1]
         assert {k: after_a[k] for k in KEPT} == {k: before[sid_a][k] for k in KEPT}
         _open(browser, f"{server.url}#session={sid_b}")
         _wait(browser, lambda d: _rows(d) == 1)
