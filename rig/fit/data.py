@@ -199,6 +199,103 @@ def load_digitised(path: str | Path, sidecar: str | Path | None, sigma, *, model
     )
 
 
+REDUCED_COLUMNS = ("point", "l_over_a", "u_l_over_a", "c_over_a", "F_y_N", "u_F_y_N", "i_k")
+
+
+def read_run_table(path: str | Path) -> tuple[pd.DataFrame, Path]:
+    """(reduced table with a ``point`` column, path of the log) from a ``log.h5`` or a ``reduced.csv``
+    beside one; every unreadable, empty or header-only table is a DataFileError naming the file."""
+    from rig.fit.inputs import DataFileError
+    from rig.logbook.reduced import read_reduced
+
+    path = Path(path)
+    if path.suffix == ".csv":
+        log = path.with_name("log.h5")
+        try:
+            table = pd.read_csv(path)
+        except pd.errors.EmptyDataError:
+            raise DataFileError(path, "no columns (empty or blank)", "a reduced.csv with a header and data rows") \
+                from None
+        except (pd.errors.ParserError, UnicodeDecodeError, ValueError) as error:
+            raise DataFileError(path, f"not a readable CSV: {str(error).splitlines()[0][:120]}",
+                                "a reduced.csv as rig run writes it") from None
+    else:
+        log = path
+        table = read_reduced(path).reset_index()
+    if table.empty:
+        raise DataFileError(path, "a header and no data rows" if len(table.columns) else "no data",
+                            "a reduced table with at least one point")
+    return table, log
+
+
+class SceneMismatchError(ParameterError):
+    """--scene describes another run than the log's stored scene: names the first difference."""
+
+
+SCENE_LOAD_SETTINGS = ("normal_force_N",)  # settings whose set of values must agree (the loads)
+
+
+def scene_differences(given, stored) -> list[str]:
+    """What differs between a scene given for a fit and the scene stored in the log: the stand, its
+    parameters except mu (geometry, stiffness ...), the contact law (model, poisson, shape) and the
+    loads; each as "name: given vs stored". Empty when they describe the same stand and loads."""
+    out = []
+    if given.stand != stored.stand:
+        return [f"stand: {given.stand} vs {stored.stand}"]
+    names = sorted((set(given.parameters) | set(stored.parameters)) - {"mu"})
+    defaults = getattr(given.stand_class, "PARAMETERS", {})
+    for name in names:
+        default = getattr(defaults.get(name), "default", None)
+        a, b = given.parameters.get(name, default), stored.parameters.get(name, default)
+        if a != b:
+            out.append(f"{name}: {a} vs {b}")
+    for key in ("model", "poisson"):
+        a, b = getattr(given.contact, key, None), getattr(stored.contact, key, None)
+        if a != b:
+            out.append(f"contact {key}: {a} vs {b}")
+    for setting in SCENE_LOAD_SETTINGS:
+        a, b = (sorted({float(p.settings[setting]) for p in s.procedure.points() if setting in p.settings})
+                for s in (given, stored))
+        if a != b:
+            out.append(f"{setting}: {a} vs {b}")
+    return out
+
+
+def load_run(path: str | Path, scene=None, *, n: int | None = None, force_scene: bool = False) -> Observations:
+    """Observations from a stand run (``log.h5`` or its ``reduced.csv``), by the loader of its stand
+    (RUN_LOADERS: stand name -> function(table, log, scene, stand, path, n)).
+
+    scene: None (the scene stored in the log) or a scene that must describe the same stand,
+    geometry, contact law and loads as the stored one (scene_differences), else a
+    SceneMismatchError; force_scene: take the given scene anyway (the summary says so).
+    """
+    from rig.logbook.reader import read_metadata
+    from rig.scenes.load import parse_scene
+
+    table, log = read_run_table(path)
+    meta = read_metadata(log)
+    stored = parse_scene(meta.scene_toml, name=f"scene of {log}", source=str(log))
+    forced = []
+    if scene is None:
+        scene = stored
+    else:
+        differences = scene_differences(scene, stored)
+        if differences and not force_scene:
+            raise SceneMismatchError("scene", scene.name, f"the scene of {log} or --force-scene",
+                                     hint="it differs from the log's stored scene in " + "; ".join(differences[:3])
+                                     + (f" and {len(differences) - 3} more" if len(differences) > 3 else ""))
+        forced = [f"--force-scene: scene {scene.name} differs from the log's own in " + "; ".join(differences)] \
+            if differences else []
+    stand = scene.build_stand()
+    name = getattr(stand, "name", "")
+    if name not in RUN_LOADERS:
+        raise ParameterError("stand", name, "one of " + ", ".join(RUN_LOADERS) + " (the stands rig fit reads)")
+    obs = RUN_LOADERS[name](table, log, scene, stand, Path(path), n)
+    if forced:
+        obs = Observations(**{**obs.__dict__, "notes": tuple(forced) + obs.notes})
+    return obs
+
+
 def load_stand_a_run(path: str | Path, scene=None, *, n: int | None = None) -> Observations:
     """Observations F_y/F_N versus l/a from a stand-A run: ``log.h5`` or ``reduced.csv`` beside it.
 
@@ -206,36 +303,34 @@ def load_stand_a_run(path: str | Path, scene=None, *, n: int | None = None) -> O
     in l/a or F_y (with a reason) are left out and counted in ``notes``; NaN anywhere else in
     a used column is an error.
     """
-    from rig.logbook.reader import read_calibration, read_metadata, read_readings, read_settings
-    from rig.logbook.reduced import read_reduced
-    from rig.scenes.load import parse_scene
+    obs = load_run(path, scene, n=n)
+    if obs.stand is None or getattr(obs.stand, "name", "") != "yoke":
+        raise ParameterError("stand", getattr(obs.stand, "name", None), "yoke (stand A)")
+    return obs
 
-    path = Path(path)
-    if path.suffix == ".csv":
-        table = pd.read_csv(path)
-        log = path.with_name("log.h5")
-        if not log.is_file():
-            raise ParameterError("DATA", str(path), "a reduced.csv with its log.h5 beside it (for F_N, Delta h)")
-    elif path.suffix in (".h5", ".hdf5"):
-        log = path
-        table = read_reduced(path).reset_index()
-    else:
-        raise ParameterError("DATA", str(path), "a log.h5, a reduced.csv, or a digitised .csv with a .toml sidecar")
-    meta = read_metadata(log)
-    if scene is None:
-        scene = parse_scene(meta.scene_toml, name=f"scene of {log}", source=str(log))
-    stand = scene.build_stand()
-    if getattr(stand, "name", "") != "yoke":
-        raise ParameterError("stand", getattr(stand, "name", stand), "yoke (stand A); stand B fits are not done")
+
+def _stand_a_observations(table: pd.DataFrame, log: Path, scene, stand, path: Path, n: int | None) -> Observations:
+    """Stand A (the yoke): see :func:`load_stand_a_run`."""
+    from rig.logbook.reader import read_calibration, read_readings, read_settings
+
     settings = read_settings(log)
-    for column in ("point", "l_over_a", "u_l_over_a", "c_over_a", "F_y_N", "u_F_y_N", "i_k"):
+    for column in REDUCED_COLUMNS:
         if column not in table.columns:
             raise ParameterError("DATA column", column, f"present in {path} (a stand-A reduced table)")
     table = table.copy()  # the caller's frame is never modified
-    usable = np.isfinite(table[["l_over_a", "F_y_N", "i_k"]].to_numpy()).all(axis=1)
+    numeric = table[list(REDUCED_COLUMNS)].apply(pd.to_numeric, errors="coerce")
+    usable = np.isfinite(numeric[["l_over_a", "F_y_N", "i_k"]].to_numpy(dtype=float)).all(axis=1)
     dropped = int((~usable).sum())
-    table = table[usable]
-    rows = table["point"].to_numpy()
+    if not usable.any():
+        raise ParameterError("DATA", str(path), "at least one point with finite l_over_a, F_y_N and i_k",
+                             hint=f"all {usable.size} rows have NaN or no number there (see the reduction's reason)")
+    table = numeric[usable]
+    points = table["point"].to_numpy()
+    if not np.all(np.isin(points, settings.index.to_numpy())):
+        missing = points[~np.isin(points, settings.index.to_numpy())]
+        raise ParameterError("DATA point", f"{missing[0]:g} in {path}", f"a point of {log} "
+                             f"(0-{len(settings) - 1}): the reduced table is not from this log")
+    rows = points.astype(int)
     f_n = settings.loc[rows, "normal_force_N"].to_numpy(dtype=float)
     delta_h = settings.loc[rows, "delta_h_m"].to_numpy(dtype=float)
     geometries = [stand.params.geometry_at(float(d)) for d in delta_h]
@@ -279,3 +374,6 @@ def is_digitised(path: str | Path, sidecar: str | Path | None) -> bool:
         return "datasets" in tomllib.loads(toml.read_text(encoding="utf-8-sig"))
     except tomllib.TOMLDecodeError:
         return True  # let the sidecar reader name the syntax error
+
+
+RUN_LOADERS = {"yoke": _stand_a_observations}  # stand name -> loader of its reduced table (load_run)

@@ -10,7 +10,8 @@ from pathlib import Path
 from rig.errors import ParameterError
 from rig.fit import parameters as P
 from rig.fit.choice import RankedModel, rank_models
-from rig.fit.data import Observations, is_digitised, load_digitised, load_stand_a_run
+from rig.fit.data import Observations, load_digitised, load_run
+from rig.fit.inputs import check_grid, data_kind
 from rig.fit.engine import FitResult
 
 
@@ -36,12 +37,16 @@ class FitReport:
 
 
 def load_data(data: str | Path, *, sidecar=None, sigma=None, scene=None, n: int | None = None,
-              effects: Mapping[str, float] | None = None, datasets: Sequence[str] | None = None) -> Observations:
-    """Observations from a digitised curve (with sidecar and sigma) or a stand-A log / reduced.csv."""
+              effects: Mapping[str, float] | None = None, datasets: Sequence[str] | None = None,
+              force_scene: bool = False) -> Observations:
+    """Observations from a digitised curve (with sidecar and sigma) or a stand run's log / reduced.csv.
+
+    The file's kind is told from its name and first bytes before anything is loaded
+    (rig.fit.inputs.data_kind); each kind has its own loader.
+    """
     path = Path(data)
-    if not path.is_file():
-        raise ParameterError("DATA", str(path), "an existing log.h5, reduced.csv or digitised .csv")
-    if is_digitised(path, sidecar):
+    n = check_grid(n)
+    if data_kind(path, sidecar) == "digitised":
         if scene is not None:
             raise ParameterError("scene", str(scene), "none for a digitised curve (its sidecar states the conditions)")
         return load_digitised(path, sidecar, sigma, n=16 if n is None else n, effects=effects,
@@ -52,7 +57,7 @@ def load_data(data: str | Path, *, sidecar=None, sigma=None, scene=None, n: int 
         from rig.scenes.load import load_scene
 
         scene = load_scene(scene)
-    obs = load_stand_a_run(path, scene, n=n)
+    obs = load_run(path, scene, n=n, force_scene=force_scene)
     if effects:
         obs = Observations(**{**obs.__dict__, "fixed_effects": {**obs.fixed_effects, **effects}})
     return obs
@@ -61,7 +66,7 @@ def load_data(data: str | Path, *, sidecar=None, sigma=None, scene=None, n: int 
 def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=None, scene=None,
              effects: Mapping[str, float] | None = None, start: Mapping[str, float] | None = None,
              n: int | None = None, profile: bool = True, polish: str = "auto",
-             datasets: Sequence[str] | None = None) -> FitReport:
+             datasets: Sequence[str] | None = None, force_scene: bool = False) -> FitReport:
     """Fit ``params`` (e.g. ["mu", "psi"]) to DATA; other parameters stay fixed (scene or ``effects``).
 
     sigma: u of digitised y (number or "name=value,..."); start: start values (default: each
@@ -69,6 +74,7 @@ def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=Non
     datasets: the digitised datasets to fit (default all).
     """
     t0 = time.perf_counter()
+    n = check_grid(n)  # every argument is checked before DATA is read
     free = P.parse_names(params)
     fixed_effects = P.check_values(effects or {}, "effects.")
     clash = [p.name for p in free if p.name in fixed_effects]
@@ -76,7 +82,9 @@ def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=Non
         raise ParameterError(f"effects.{clash[0]}", fixed_effects[clash[0]], "not also a free parameter")
     starts = {p.name: p.start for p in free}
     starts.update(P.check_values(start or {}, "start value of "))
-    obs = load_data(data, sidecar=sidecar, sigma=sigma, scene=scene, n=n, effects=fixed_effects, datasets=datasets)
+    data_kind(data, sidecar)
+    obs = load_data(data, sidecar=sidecar, sigma=sigma, scene=scene, n=n, effects=fixed_effects, datasets=datasets,
+                    force_scene=force_scene)
     if obs.stand is not None and "pressure_exponent" in {p.name for p in free} | set(fixed_effects):
         raise ParameterError("params", "pressure_exponent", "a parameter of a digitised contact curve: stand A has "
                              "no pressure-dependent mu (its mu(p0) per load is done for stand B only)")
