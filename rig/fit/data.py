@@ -84,7 +84,7 @@ class Observations:
         variance at the measured y, where the reduction propagated them."""
         if self.common is None:
             return self.u
-        return np.sqrt(np.clip(self.u**2 - np.diag(self.common.covariance(self.y)), 0.0, None))
+        return np.sqrt(np.clip(self.u**2 - self.common.variance(self.y), 0.0, None))
 
     @property
     def mu_dependent(self) -> bool:

@@ -9,8 +9,9 @@ with f linearised in l gives exactly this chi2 with df/dl taken *at theta* (Orea
 variance; Deming's regression for a straight line). df/dl therefore moves with theta inside the
 minimisation: held fixed, the weights do not see that a larger slope also spreads the data, and
 the estimate is attenuated like a least-squares slope on a noisy regressor (measured on stand-A
-runs: mu 0.13 % low, docs/fit.md). The residuals are whitened with the Cholesky factor of
-V(theta) and minimised with scipy.optimize.least_squares (trust-region reflective, bounds = the
+runs: mu 0.13 % low, docs/fit.md). The residuals are whitened by a linear map W with
+|W r|^2 = r^T V^-1 r (Weights: V's O(N) structured form, rig.fit.covariance, so no N x N matrix is
+formed; the Cholesky factor of V where a dense common covariance is given) and minimised with scipy.optimize.least_squares (trust-region reflective, bounds = the
 ranges).
 
 95 % interval of a parameter: the values where the profile chi2 (minimised over the others)
@@ -36,6 +37,7 @@ from rig.fit.forward import ForwardModel
 DELTA_CHI2_95 = 3.841458820694124  # chi2 quantile 0.95, 1 degree of freedom
 CORRELATION_LIMIT = 0.95
 DL_STEP = 1e-3  # [units of a] finite-difference step of df/dl
+COVARIANCE_FORM = "structured"  # "dense": the N x N Cholesky form (tests compare the two on small data)
 RETRY_NFEV_PER_PARAMETER = 1000  # evaluations of a second attempt when the first's 100 a parameter ran out
 
 
@@ -194,10 +196,18 @@ class Objective:
         if obs.common is None:
             return Weights(u_eff, None)
         prediction = self.predict(theta) if prediction is None else prediction
-        residual = obs.y - prediction
-        others = obs.common.covariance(None) + np.diag(u_eff**2)
-        adjusted = prediction + from_l * np.linalg.solve(others, residual)
-        return Weights(u_eff, obs.common.covariance(adjusted))
+        adjusted = prediction
+        if np.any(from_l > 0):
+            residual = obs.y - prediction
+            if COVARIANCE_FORM == "dense" or obs.common.fixed is not None:
+                others = obs.common.covariance(None) + np.diag(u_eff**2)
+                adjusted = prediction + from_l * np.linalg.solve(others, residual)
+            else:
+                floor = np.maximum(u_eff**2, 1e-9 * obs.common.variance(None) + 1e-300)
+                adjusted = prediction + from_l * obs.common.structured(None, floor).solve(residual)
+        if COVARIANCE_FORM == "dense" or obs.common.fixed is not None:
+            return Weights(u_eff, obs.common.covariance(adjusted))
+        return Weights(u_eff, obs.common, adjusted)
 
     def residual(self, theta: np.ndarray) -> np.ndarray:
         prediction = self.predict(theta)
@@ -205,24 +215,34 @@ class Objective:
 
 
 class Weights:
-    """Whitening of residuals: L^-1 r with V = diag(u_eff^2) + C = L L^T (diagonal without C).
+    """Whitening of residuals: a linear map W with |W r|^2 = r^T V^-1 r, V = diag(u_eff^2) + C.
 
-    u_eff: the independent u per point; common: C or None. The diagonal is kept at least
-    (1 + 1e-9) diag C so that V stays positive definite when u_eff is 0.
+    u_eff: the independent u per point; common: None (V diagonal, W r = r / u_eff), C as an
+    (N, N) matrix (W = L^-1 with V = L L^T), or CommonErrors with the values ``at`` its
+    sensitivity's part is taken (W: rig.fit.covariance.StructuredCovariance.whiten, O(N) memory;
+    W r is then N + K + m long). The diagonal is kept at least (1 + 1e-9) diag C so that V stays
+    positive definite when u_eff is 0.
     """
 
-    def __init__(self, u_eff: np.ndarray, common: np.ndarray | None) -> None:
+    def __init__(self, u_eff: np.ndarray, common, at: np.ndarray | None = None) -> None:
         self.u_eff = u_eff
+        self.factor = None
+        self.structured = None
         if common is None:
-            self.factor = None
             self.u_total = u_eff
-        else:
+        elif isinstance(common, np.ndarray):
             v = common.copy()
             v[np.diag_indices_from(v)] = np.maximum(u_eff**2, 1e-9 * np.diag(common)) + np.diag(common)
             self.factor = np.linalg.cholesky(v)
             self.u_total = np.sqrt(np.diag(v))
+        else:
+            shared = common.variance(at)
+            self.structured = common.structured(at, np.maximum(u_eff**2, 1e-9 * shared))
+            self.u_total = np.sqrt(self.structured.diagonal())
 
     def __call__(self, r: np.ndarray) -> np.ndarray:
+        if self.structured is not None:
+            return self.structured.whiten(r)
         if self.factor is None:
             return r / self.u_eff
         return solve_triangular(self.factor, r, lower=True, check_finite=False)
