@@ -45,6 +45,9 @@ def add_parser(subparsers: argparse._SubParsersAction) -> argparse.ArgumentParse
     parser.add_argument("--effects", default=None, metavar="NAME=VALUE,...", help="fixed effect values, e.g. psi=1.2")
     parser.add_argument("--start", default=None, metavar="NAME=VALUE,...", help="start values of free parameters")
     parser.add_argument("--sigma", default=None, help="u of a digitised y: VALUE or DATASET=VALUE,...")
+    parser.add_argument("--extra-scatter", default=None, metavar="S|fit",
+                        help="an independent scatter S added to every point's u (u^2 + S^2) [units of the fitted "
+                        "quantity], or 'fit' to estimate it (chi2/dof = 1); default none: the stated u alone")
     parser.add_argument("--sidecar", type=Path, default=None, help="TOML sidecar (default: DATA.toml)")
     parser.add_argument("--n", type=int, default=None, help="contact grid cells across 2a (default: scene's, 16)")
     parser.add_argument("--polish", choices=("auto", "check", "never", "always"), default="auto",
@@ -64,7 +67,7 @@ def main(args: argparse.Namespace) -> int:
     report = fit_data(
         args.data, [p.strip() for p in args.params.split(",") if p.strip()], sidecar=args.sidecar, sigma=args.sigma,
         scene=args.scene, effects=_pairs(args.effects, "--effects"), start=_pairs(args.start, "--start"), n=args.n,
-        polish=args.polish, force_scene=args.force_scene,
+        polish=args.polish, force_scene=args.force_scene, extra_scatter=args.extra_scatter,
     )
     write_outputs(report, args.output, plot=not args.no_plot)
     print(summary_text(report), end="")

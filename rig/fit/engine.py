@@ -37,6 +37,7 @@ from rig.fit.forward import ForwardModel
 DELTA_CHI2_95 = 3.841458820694124  # chi2 quantile 0.95, 1 degree of freedom
 CORRELATION_LIMIT = 0.95
 DL_STEP = 1e-3  # [units of a] finite-difference step of df/dl
+TABLE_ERROR_FRACTION = 0.2  # table-vs-direct error, as a fraction of a point's u, above which the fit warns
 COVARIANCE_FORM = "structured"  # "dense": the N x N Cholesky form (tests compare the two on small data)
 RETRY_NFEV_PER_PARAMETER = 1000  # evaluations of a second attempt when the first's 100 a parameter ran out
 
@@ -77,6 +78,7 @@ class FitResult:
     table_error: float = float("nan")
     polished: bool = False
     scatter: float = 0.0
+    table_error_ratio: float = float("nan")
 
     @property
     def k(self) -> int:
@@ -132,14 +134,21 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
     x_table, chi2_table = res.x, chi2
     table_error = float("nan")
     polished = False
+    table_error_ratio = float("nan")
     if polish != "never":
-        table_error = float(np.max(np.abs(model.direct(res.x) - model.predict(res.x))))
+        difference = np.abs(model.direct(res.x) - model.predict(res.x))
+        table_error = float(np.max(difference))
+        table_error_ratio = float(np.max(difference / weights.u_total))
         if polish == "always" or (polish == "auto" and table_error > polish_ratio * float(np.min(obs.u))):
             res = _minimise(Objective(model, s, model.direct).residual, res.x, lo, hi, label,
                             max_nfev=20 * (len(free) + 1))
             chi2 = float(np.sum(res.fun**2))
             polished = True
     warnings = []
+    if table_error_ratio > TABLE_ERROR_FRACTION and not polished:
+        warnings.append(f"the table/node interpolation errs by up to {table_error:.2g} at the optimum, "
+                        f"{table_error_ratio:.2g} of a point's u (> {TABLE_ERROR_FRACTION:g}): the estimates may "
+                        "carry it; refit with --polish always (direct solves at the optimum) or a finer --n")
     intervals = []
     for i, p in enumerate(free):
         if profile:
@@ -166,7 +175,7 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
         names=tuple(p.name for p in free), estimates=estimates, correlation=corr, chi2=chi2, n_points=obs.size,
         prediction=(model.direct if polished else predict)(res.x), band=band, u_eff=weights.u_total,
         warnings=tuple(warnings), evaluations=model.evaluations, message=str(res.message), table_error=table_error,
-        polished=polished, scatter=s,
+        polished=polished, scatter=s, table_error_ratio=table_error_ratio,
     )
 
 

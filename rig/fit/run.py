@@ -7,23 +7,79 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
+from scipy.stats import chi2 as chi2_dist
+
+from rig import validate
 from rig.errors import ParameterError
 from rig.fit import parameters as P
-from rig.fit.choice import RankedModel, rank_models
+from rig.fit.choice import RankedModel, decide, rank_models
 from rig.fit.data import Observations, load_digitised, load_run
 from rig.fit.inputs import check_grid, data_kind
 from rig.fit.engine import FitResult
 
 
+GOF_ALPHA = 0.01  # chi2 p-value below which the data scatter more than their u explains
+MISFIT_WARNING = ("the model does not describe these data: look for an effect not in --params, or a wrong scene")
+
+
+@dataclass(frozen=True)
+class Goodness:
+    """chi2 of the full set against the scatter the stated u expects (chi2 with dof degrees of freedom).
+
+    p: P(chi2_dof >= chi2); misfit: p < GOF_ALPHA; birge: sqrt(chi2/dof), the factor by which the
+    u would have to grow for chi2/dof = 1 (>= 1 only when the data scatter more than stated).
+    """
+
+    chi2: float
+    dof: int
+    p: float
+    misfit: bool
+
+    @property
+    def birge(self) -> float:
+        return float(np.sqrt(self.chi2 / self.dof)) if self.dof > 0 else float("nan")
+
+
+def goodness_of(result: FitResult) -> Goodness:
+    p = float(chi2_dist.sf(result.chi2, result.dof)) if result.dof > 0 else float("nan")
+    return Goodness(result.chi2, result.dof, p, bool(p < GOF_ALPHA))
+
+
 @dataclass(frozen=True)
 class FitReport:
-    """Everything a fit produced: the data, the full set's fit (``full``), all ranked sets, cost [s]."""
+    """Everything a fit produced: the data, the full set's fit (``full``), all ranked sets, cost [s];
+    extra_scatter: what the user asked for (None: none, "fit": estimated, or a value [units of y])."""
 
     obs: Observations
     free: tuple[P.FitParameter, ...]
     fixed: dict[str, float]
     models: list[RankedModel]
     seconds: float
+    extra_scatter: object = None
+
+    @property
+    def goodness(self) -> Goodness:
+        """The full set's chi2 against the stated u (with the extra scatter when the user named one)."""
+        return goodness_of(self.full)
+
+    @property
+    def warnings(self) -> list[str]:
+        """Warnings for the reader, the most important first (the misfit line leads)."""
+        out = []
+        g = self.goodness
+        if g.misfit:
+            out.append(f"{MISFIT_WARNING} (chi2 = {g.chi2:.4g} for {g.dof} degrees of freedom, p = {g.p:.2g}; "
+                       f"the data scatter {g.birge:.2g}x more than {self._scatter_words()} explain)")
+        out.extend(self.full.warnings)
+        return out
+
+    def _scatter_words(self) -> str:
+        if self.obs.stand is not None:
+            words = "the instruments' stated noise, resolution and calibration"
+        else:
+            words = "the stated u of the digitised points"
+        return words + (" and the extra scatter" if self.full.scatter > 0 else "")
 
     @property
     def full(self) -> FitResult:
@@ -34,6 +90,12 @@ class FitReport:
     def best(self) -> RankedModel:
         """The effect set ranked first by AIC."""
         return min(self.models, key=lambda m: m.rank)
+
+    @property
+    def decision(self) -> RankedModel:
+        """The effect set the data call for: from the smallest set, each next set is taken while its
+        likelihood-ratio test against the previous one gives p < DECISION_ALPHA (rig.fit.choice)."""
+        return decide(self.models)
 
 
 def load_data(data: str | Path, *, sidecar=None, sigma=None, scene=None, n: int | None = None,
@@ -66,15 +128,20 @@ def load_data(data: str | Path, *, sidecar=None, sigma=None, scene=None, n: int 
 def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=None, scene=None,
              effects: Mapping[str, float] | None = None, start: Mapping[str, float] | None = None,
              n: int | None = None, profile: bool = True, polish: str = "auto",
-             datasets: Sequence[str] | None = None, force_scene: bool = False) -> FitReport:
+             datasets: Sequence[str] | None = None, force_scene: bool = False,
+             extra_scatter: str | float | None = None) -> FitReport:
     """Fit ``params`` (e.g. ["mu", "psi"]) to DATA; other parameters stay fixed (scene or ``effects``).
 
     sigma: u of digitised y (number or "name=value,..."); start: start values (default: each
     parameter's own); n: contact grid (default: the scene's, 16 for a digitised curve);
-    datasets: the digitised datasets to fit (default all).
+    datasets: the digitised datasets to fit (default all); force_scene: fit with ``scene`` although it
+    differs from the log's stored one; extra_scatter: an independent scatter s added to every point's
+    u (u^2 + s^2) [units of y]: None (none: the stated u alone, the default), a value, or "fit" (s
+    such that chi2/dof = 1 for the full set, held for the smaller sets).
     """
     t0 = time.perf_counter()
     n = check_grid(n)  # every argument is checked before DATA is read
+    scatter = _check_extra_scatter(extra_scatter)
     free = P.parse_names(params)
     fixed_effects = P.check_values(effects or {}, "effects.")
     clash = [p.name for p in free if p.name in fixed_effects]
@@ -97,8 +164,22 @@ def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=Non
     fixed = {}
     if not any(p.name == "mu" for p in free) and obs.mu_dependent:
         fixed["mu"] = obs.stand.params.mu
-    scatter = None if obs.common is not None else 0.0  # run data: u states the calibration only
     if obs.stand is not None and polish == "auto":
         polish = "check"  # the stand's table is the law the twin simulates with: direct solves are not closer
     models = rank_models(obs, free, fixed, starts, profile=profile, polish=polish, scatter=scatter)
-    return FitReport(obs, free, fixed, models, time.perf_counter() - t0)
+    return FitReport(obs, free, fixed, models, time.perf_counter() - t0, extra_scatter)
+
+
+def _check_extra_scatter(given: str | float | None) -> float | None:
+    """None -> 0.0 (no extra scatter), "fit" -> None (estimated), a number -> that value (>= 0)."""
+    if given is None:
+        return 0.0
+    if isinstance(given, str) and given.strip().lower() == "fit":
+        return None
+    if isinstance(given, str):
+        try:
+            given = float(given)
+        except ValueError:
+            raise ParameterError("extra-scatter", given, "'fit' or a number >= 0 [units of the fitted quantity]") \
+                from None
+    return validate.number("extra-scatter", given, 0.0)
