@@ -62,7 +62,7 @@ def set_label(params: Sequence[FitParameter]) -> str:
 
 def rank_models(obs: Observations, free: Sequence[FitParameter], fixed: Mapping[str, float],
                 start: Mapping[str, float], *, profile: bool = True, polish: str = "auto",
-                scatter: float | None = 0.0) -> list[RankedModel]:
+                scatter: float | None = 0.0, widen_misfit: bool = False) -> list[RankedModel]:
     """Fit every nested set (profile intervals for the full set only) and rank them by AIC.
 
     scatter: extra independent scatter (engine.fit); None estimates it on the full set, and the
@@ -89,7 +89,7 @@ def rank_models(obs: Observations, free: Sequence[FitParameter], fixed: Mapping[
             trials = [fit(model, x, profile=False, polish="never", label=label, scatter=scatter) for x in (first, nested)]
             first = [e.value for e in min(trials, key=lambda r: r.chi2).estimates]
         result = fit(model, first, profile=profile and params == sets[-1], polish=polish, label=label,
-                     scatter=scatter)
+                     scatter=scatter, widen_misfit=widen_misfit and params == sets[-1])
         results.append((label, result, params))
     order = np.argsort([r.aic for _, r, _ in results], kind="stable")
     ranks = np.empty(len(results), dtype=int)

@@ -47,7 +47,8 @@ class Observations:
 
     quantity: "nu_T", "nu_v", "nu_0" (contact coefficients) or "F_y_per_F_N" (= mu nu_v);
     y, u: value and standard uncertainty [1]; x: the plotted abscissa (x_label names it);
-    l, c: rolling point [units of a]; u_l: its standard uncertainty (0 when exact);
+    l, c: rolling point [units of a]; u_l: the standard uncertainty of the measured regressor
+    (``regressor``: l_over_a for a run, the x axis of a digitised curve; 0 when exact);
     alpha: alpha' [1] where fixed by the data, NaN where alpha' = mu alpha_per_mu;
     b_over_a [1]; series: label of each point's curve; stand: the Stand when the data is a run;
     common: errors shared between points (rig.fit.common_errors: the dynamometer's one calibration
@@ -73,6 +74,7 @@ class Observations:
     geometry: object | None = None
     notes: tuple[str, ...] = field(default_factory=tuple)
     common: CommonErrors | None = None
+    regressor: str = "l_over_a"
 
     @property
     def size(self) -> int:
@@ -101,15 +103,17 @@ def _finite(name: str, values: np.ndarray, rows: np.ndarray | None = None) -> np
     return values
 
 
-def parse_sigma(given: str | float | Mapping[str, float] | None, datasets: list[str]) -> dict[str, float]:
-    """Uncertainty per dataset from "0.01", "nu_v=0.01,nu_0=0.005", a number or a mapping."""
+def parse_sigma(given: str | float | Mapping[str, float] | None, datasets: list[str], what: str = "sigma",
+                zero: bool = False) -> dict[str, float]:
+    """Uncertainty per dataset from "0.01", "nu_v=0.01,nu_0=0.005", a number or a mapping
+    (``what`` names it in errors; zero: 0 allowed)."""
     if given is None:
-        raise ParameterError("sigma", None, "the standard uncertainty of the digitised y, e.g. --sigma 0.01 "
+        raise ParameterError(what, None, "the standard uncertainty of the digitised y, e.g. --sigma 0.01 "
                              "or --sigma nu_v=0.01,nu_0=0.005 (the digitised format states none)")
     if isinstance(given, str) and "=" not in given:
         given = float(given) if _is_number(given) else given
     if isinstance(given, (int, float)) and not isinstance(given, bool):
-        value = validate.number("sigma", given, 0.0, lo_open=True)
+        value = validate.number(what, given, 0.0, lo_open=not zero)
         return {name: value for name in datasets}
     if isinstance(given, str):
         pairs = {}
@@ -117,11 +121,11 @@ def parse_sigma(given: str | float | Mapping[str, float] | None, datasets: list[
             key, _, value = item.partition("=")
             pairs[key.strip()] = float(value) if _is_number(value) else value.strip()
         given = pairs
-    validate.known_keys("dataset in sigma", given, datasets)
-    out = {name: validate.number(f"sigma.{name}", v, 0.0, lo_open=True) for name, v in given.items()}
+    validate.known_keys(f"dataset in {what}", given, datasets)
+    out = {name: validate.number(f"{what}.{name}", v, 0.0, lo_open=not zero) for name, v in given.items()}
     missing = [name for name in datasets if name not in out]
     if missing:
-        raise ParameterError(f"sigma.{missing[0]}", None, "a positive number for every dataset fitted")
+        raise ParameterError(f"{what}.{missing[0]}", None, "a positive number for every dataset fitted")
     return out
 
 
@@ -135,8 +139,12 @@ def _is_number(text: str) -> bool:
 
 def load_digitised(path: str | Path, sidecar: str | Path | None, sigma, *, model: str = "kinematic",
                    n: int = DEFAULT_N, datasets: list[str] | None = None,
-                   effects: Mapping[str, float] | None = None) -> Observations:
+                   effects: Mapping[str, float] | None = None, sigma_x=None) -> Observations:
     """Observations from a digitised contact curve: every dataset (or ``datasets``) of the export.
+
+    sigma: u of the digitised y per dataset; sigma_x: u of the digitised x (None: exact), a
+    number or "name=value,...", in the x axis's units; carried to y by the effective variance
+    (df/dx sigma_x)^2 with df/dx at the fitted parameters (rig.fit.engine).
 
     The sidecar's conditions must give shape, b_over_a, poisson and the two of alpha, l_over_a,
     c_over_a that are not the x axis; datasets must be nu_T, nu_v or nu_0 (magnitudes allowed).
@@ -152,6 +160,7 @@ def load_digitised(path: str | Path, sidecar: str | Path | None, sigma, *, model
     frames = digitised_frames(curves, spec, str(path))
     names = list(frames) if datasets is None else [validate.choice("dataset", d, list(frames)) for d in datasets]
     sigmas = parse_sigma(sigma, names)
+    sigmas_x = {name: 0.0 for name in names} if sigma_x is None else parse_sigma(sigma_x, names, "sigma-x", zero=True)
     x_col = validate.choice(f"x axis of {sidecar_path}", spec.x.column, X_COLUMNS)
     parts = []
     for name in names:
@@ -175,7 +184,7 @@ def load_digitised(path: str | Path, sidecar: str | Path | None, sigma, *, model
         shape = cond.get("shape")
         if not isinstance(shape, str):
             raise ParameterError("conditions.shape", shape, f"a shape name in the sidecar {sidecar_path}")
-        parts.append((name, ds.y.column, ds.y.magnitude, x, y, sigmas[name], cond_values, shape))
+        parts.append((name, ds.y.column, ds.y.magnitude, x, y, sigmas[name], cond_values, shape, sigmas_x[name]))
     shapes = {p[7] for p in parts}
     poissons = {float(p[6]["poisson"][0]) for p in parts}
     if len(shapes) != 1 or len(poissons) != 1:
@@ -188,13 +197,15 @@ def load_digitised(path: str | Path, sidecar: str | Path | None, sigma, *, model
         u=np.concatenate([np.full(p[3].size, p[5]) for p in parts]),
         x=np.concatenate([p[3] for p in parts]),
         x_label=spec.x.label,
-        l=cat("l_over_a"), c=cat("c_over_a"), u_l=np.zeros(quantity.size),
+        l=cat("l_over_a"), c=cat("c_over_a"), u_l=np.concatenate([np.full(p[3].size, p[8]) for p in parts]),
         alpha=_finite("alpha", cat("alpha")), alpha_per_mu=np.full(quantity.size, np.nan),
         b_over_a=cat("b_over_a"),
         series=np.concatenate([np.full(p[3].size, p[0]) for p in parts]),
         contact=ContactCondition(model, shapes.pop(), poissons.pop(), validate.integer("n", n, 4, 512)),
         fixed_effects=dict(effects or {}),
-        source=f"{path} (sidecar {sidecar_path}), u as given: {sigmas}",
+        source=f"{path} (sidecar {sidecar_path}), u as given: {sigmas}"
+               + (f", u of {x_col} as given: {sigmas_x}" if sigma_x is not None else f", {x_col} taken as exact"),
+        regressor=x_col,
         notes=tuple(f"{p[0]} is |{p[1]}|" for p in parts if p[2]),
     )
 

@@ -30,11 +30,13 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.linalg import solve_triangular
 from scipy.optimize import brentq, least_squares
+from scipy.stats import chi2 as chi2_dist
 
 from rig.errors import ConvergenceError, ParameterError
 from rig.fit.forward import ForwardModel
 
 DELTA_CHI2_95 = 3.841458820694124  # chi2 quantile 0.95, 1 degree of freedom
+MISFIT_ALPHA = 0.01  # chi2 p-value below which the data scatter more than their u explains
 CORRELATION_LIMIT = 0.95
 DL_STEP = 1e-3  # [units of a] finite-difference step of df/dl
 TABLE_ERROR_FRACTION = 0.2  # table-vs-direct error, as a fraction of a point's u, above which the fit warns
@@ -79,6 +81,7 @@ class FitResult:
     polished: bool = False
     scatter: float = 0.0
     table_error_ratio: float = float("nan")
+    birge: float = 1.0
 
     @property
     def k(self) -> int:
@@ -101,14 +104,18 @@ class FitResult:
 
 
 def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, polish: str = "auto",
-        polish_ratio: float = 0.2, label: str = "", scatter: float | None = 0.0) -> FitResult:
+        polish_ratio: float = 0.2, label: str = "", scatter: float | None = 0.0,
+        widen_misfit: bool = False) -> FitResult:
     """Fit ``model`` to its observations from ``start``; see the module docstring.
 
     polish: "auto" (direct-solve refit of the estimate when max |table - direct| at the
     optimum exceeds polish_ratio * min u; the table's profile intervals and covariance are then
     moved to the polished estimate), "check" (report table - direct, never refit), "never" or
     "always". scatter: independent scatter s added to every point's u (u_eff^2 += s^2)
-    [units of y]; None estimates it (see estimate_scatter).
+    [units of y]; None estimates it (see estimate_scatter). widen_misfit: where chi2 of the
+    fit has p < MISFIT_ALPHA against its degrees of freedom, widen u and the intervals by the Birge
+    ratio R = sqrt(chi2/dof) (every u scaled by R: u times R, the profile threshold 3.84 R^2;
+    FitResult.birge says so) - for data whose u is a guess (a digitised curve's --sigma).
     """
     obs = model.obs
     free = model.free
@@ -130,7 +137,6 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
     slopes = _slopes(predict, res.x, lo, hi)
     jac = np.column_stack([-weights(column) for column in slopes.T]) if slopes.size else slopes
     cov, corr = _covariance(jac)
-    u = np.sqrt(np.clip(np.diag(cov), 0.0, None))
     x_table, chi2_table = res.x, chi2
     table_error = float("nan")
     polished = False
@@ -144,6 +150,12 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
                             max_nfev=20 * (len(free) + 1))
             chi2 = float(np.sum(res.fun**2))
             polished = True
+    dof = obs.size - len(free)
+    birge = 1.0
+    if widen_misfit and dof > 0 and chi2 > dof and chi2_dist.sf(chi2, dof) < MISFIT_ALPHA:
+        birge = float(np.sqrt(chi2 / dof))  # of the final chi2 (after a polish)
+        cov = cov * birge**2
+    u = np.sqrt(np.clip(np.diag(cov), 0.0, None))
     warnings = []
     if table_error_ratio > TABLE_ERROR_FRACTION and not polished:
         warnings.append(f"the table/node interpolation errs by up to {table_error:.2g} at the optimum, "
@@ -152,7 +164,8 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
     intervals = []
     for i, p in enumerate(free):
         if profile:
-            interval = _profile_interval(objective.residual, x_table, lo, hi, i, chi2_table, label, u[i])
+            interval = _profile_interval(objective.residual, x_table, lo, hi, i, chi2_table, label, u[i],
+                                         DELTA_CHI2_95 * birge**2)
             shift = res.x[i] - x_table[i]  # polished: the table's profile moved to the direct optimum
             interval = (max(lo[i], interval[0] + shift), min(hi[i], interval[1] + shift), *interval[2:])
         else:
@@ -175,7 +188,7 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
         names=tuple(p.name for p in free), estimates=estimates, correlation=corr, chi2=chi2, n_points=obs.size,
         prediction=(model.direct if polished else predict)(res.x), band=band, u_eff=weights.u_total,
         warnings=tuple(warnings), evaluations=model.evaluations, message=str(res.message), table_error=table_error,
-        polished=polished, scatter=s, table_error_ratio=table_error_ratio,
+        polished=polished, scatter=s, table_error_ratio=table_error_ratio, birge=birge,
     )
 
 
@@ -337,12 +350,12 @@ def _profile_chi2(residual, x_best, lo, hi, i, value, label) -> float:
     return float(np.sum(res.fun**2))
 
 
-def _profile_interval(residual, x_best, lo, hi, i, chi2_min, label, scale):
+def _profile_interval(residual, x_best, lo, hi, i, chi2_min, label, scale, delta=DELTA_CHI2_95):
     """(lo95, hi95, open_lo, open_hi): where the profile chi2 crosses chi2_min + 3.84.
 
     scale: the parameter's standard uncertainty; the crossings are found to 1e-3 of it.
     """
-    target = chi2_min + DELTA_CHI2_95
+    target = chi2_min + delta
 
     def excess(value):
         return _profile_chi2(residual, x_best, lo, hi, i, value, label) - target

@@ -115,13 +115,16 @@ class ForwardModel:
         return np.where(np.isnan(self.obs.alpha), mu * self.obs.alpha_per_mu, self.obs.alpha)
 
     def _direct_nu(self, effects: dict[str, float], mu: float, dl: float) -> np.ndarray:
+        """Direct solves at every point; dl shifts the measured regressor (obs.regressor: l/a, c/a or alpha')."""
         o = self.obs
-        alpha = self._alpha(mu)
+        shift = {"l_over_a": 0.0, "c_over_a": 0.0, "alpha": 0.0}
+        shift[o.regressor] = dl
+        alpha = self._alpha(mu) + shift["alpha"]
         out = np.empty((o.size, 3))
         for i in range(o.size):
             r = solve(o.contact.model, shape=o.contact.shape, b_over_a=float(o.b_over_a[i]), alpha=float(alpha[i]),
-                      c_over_a=float(o.c[i]), l_over_a=float(o.l[i] + dl), poisson=o.contact.poisson,
-                      n=o.contact.n, **effects)
+                      c_over_a=float(o.c[i] + shift["c_over_a"]), l_over_a=float(o.l[i] + shift["l_over_a"]),
+                      poisson=o.contact.poisson, n=o.contact.n, **effects)
             out[i] = (r.nu_T, r.nu_v, r.nu_0)
         return out
 

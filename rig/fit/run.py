@@ -16,10 +16,10 @@ from rig.fit import parameters as P
 from rig.fit.choice import RankedModel, decide, rank_models
 from rig.fit.data import Observations, load_digitised, load_run
 from rig.fit.inputs import check_grid, data_kind
+from rig.fit.engine import MISFIT_ALPHA as GOF_ALPHA  # chi2 p below which the data scatter too much
 from rig.fit.engine import FitResult
 
 
-GOF_ALPHA = 0.01  # chi2 p-value below which the data scatter more than their u explains
 MISFIT_WARNING = ("the model does not describe these data: look for an effect not in --params, or a wrong scene")
 
 
@@ -71,6 +71,9 @@ class FitReport:
         if g.misfit:
             out.append(f"{MISFIT_WARNING} (chi2 = {g.chi2:.4g} for {g.dof} degrees of freedom, p = {g.p:.2g}; "
                        f"the data scatter {g.birge:.2g}x more than {self._scatter_words()} explain)")
+            if self.full.birge > 1:
+                out.append(f"intervals and u widened by the Birge ratio R = sqrt(chi2/dof) = {self.full.birge:.3g} "
+                           "(every point's u scaled by R; the u of a digitised curve is a guess)")
         out.extend(self.full.warnings)
         return out
 
@@ -98,7 +101,7 @@ class FitReport:
         return decide(self.models)
 
 
-def load_data(data: str | Path, *, sidecar=None, sigma=None, scene=None, n: int | None = None,
+def load_data(data: str | Path, *, sidecar=None, sigma=None, sigma_x=None, scene=None, n: int | None = None,
               effects: Mapping[str, float] | None = None, datasets: Sequence[str] | None = None,
               force_scene: bool = False) -> Observations:
     """Observations from a digitised curve (with sidecar and sigma) or a stand run's log / reduced.csv.
@@ -112,9 +115,11 @@ def load_data(data: str | Path, *, sidecar=None, sigma=None, scene=None, n: int 
         if scene is not None:
             raise ParameterError("scene", str(scene), "none for a digitised curve (its sidecar states the conditions)")
         return load_digitised(path, sidecar, sigma, n=16 if n is None else n, effects=effects,
-                              datasets=None if datasets is None else list(datasets))
+                              datasets=None if datasets is None else list(datasets), sigma_x=sigma_x)
     if sigma is not None:
         raise ParameterError("sigma", sigma, "none for a stand run (u comes from the instruments in the log)")
+    if sigma_x is not None:
+        raise ParameterError("sigma-x", sigma_x, "none for a stand run (u(l/a) comes from the reduction)")
     if scene is not None and not hasattr(scene, "build_stand"):
         from rig.scenes.load import load_scene
 
@@ -125,14 +130,15 @@ def load_data(data: str | Path, *, sidecar=None, sigma=None, scene=None, n: int 
     return obs
 
 
-def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=None, scene=None,
+def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=None, sigma_x=None, scene=None,
              effects: Mapping[str, float] | None = None, start: Mapping[str, float] | None = None,
              n: int | None = None, profile: bool = True, polish: str = "auto",
              datasets: Sequence[str] | None = None, force_scene: bool = False,
              extra_scatter: str | float | None = None) -> FitReport:
     """Fit ``params`` (e.g. ["mu", "psi"]) to DATA; other parameters stay fixed (scene or ``effects``).
 
-    sigma: u of digitised y (number or "name=value,..."); start: start values (default: each
+    sigma: u of digitised y (number or "name=value,..."); sigma_x: u of digitised x, same forms
+    (effective variance; None: x exact); start: start values (default: each
     parameter's own); n: contact grid (default: the scene's, 16 for a digitised curve);
     datasets: the digitised datasets to fit (default all); force_scene: fit with ``scene`` although it
     differs from the log's stored one; extra_scatter: an independent scatter s added to every point's
@@ -150,8 +156,8 @@ def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=Non
     starts = {p.name: p.start for p in free}
     starts.update(P.check_values(start or {}, "start value of "))
     data_kind(data, sidecar)
-    obs = load_data(data, sidecar=sidecar, sigma=sigma, scene=scene, n=n, effects=fixed_effects, datasets=datasets,
-                    force_scene=force_scene)
+    obs = load_data(data, sidecar=sidecar, sigma=sigma, sigma_x=sigma_x, scene=scene, n=n, effects=fixed_effects,
+                    datasets=datasets, force_scene=force_scene)
     if obs.stand is not None and "pressure_exponent" in {p.name for p in free} | set(fixed_effects):
         raise ParameterError("params", "pressure_exponent", "a parameter of a digitised contact curve: stand A has "
                              "no pressure-dependent mu (its mu(p0) per load is done for stand B only)")
@@ -166,7 +172,8 @@ def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=Non
         fixed["mu"] = obs.stand.params.mu
     if obs.stand is not None and polish == "auto":
         polish = "check"  # the stand's table is the law the twin simulates with: direct solves are not closer
-    models = rank_models(obs, free, fixed, starts, profile=profile, polish=polish, scatter=scatter)
+    widen = obs.stand is None and extra_scatter is None  # a digitised curve's u is a guess: Birge-widen a misfit
+    models = rank_models(obs, free, fixed, starts, profile=profile, polish=polish, scatter=scatter, widen_misfit=widen)
     return FitReport(obs, free, fixed, models, time.perf_counter() - t0, extra_scatter)
 
 
