@@ -285,7 +285,7 @@ def load_run(path: str | Path, scene=None, *, n: int | None = None, force_scene:
 
     table, log = read_run_table(path)
     meta = read_metadata(log)
-    stored = parse_scene(meta.scene_toml, name=f"scene of {log}", source=str(log))
+    stored = parse_scene(meta.scene_toml, name=f"stored in {log}", source=str(log))
     forced = []
     if scene is None:
         scene = stored

@@ -82,6 +82,8 @@ class FitResult:
     scatter: float = 0.0
     table_error_ratio: float = float("nan")
     birge: float = 1.0
+    profiles: dict | None = None  # name -> (k, 2) array of (value, profile chi2 - minimum) [in Birge-scaled chi2]
+    u_point: np.ndarray | None = None  # the point-to-point part of u_eff (without the shared errors)
 
     @property
     def k(self) -> int:
@@ -162,11 +164,15 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
                         f"{table_error_ratio:.2g} of a point's u (> {TABLE_ERROR_FRACTION:g}): the estimates may "
                         "carry it; refit with --polish always (direct solves at the optimum) or a finer --n")
     intervals = []
+    profiles = {}
     for i, p in enumerate(free):
         if profile:
+            visited = [(float(x_table[i]), chi2_table)]
             interval = _profile_interval(objective.residual, x_table, lo, hi, i, chi2_table, label, u[i],
-                                         DELTA_CHI2_95 * birge**2)
+                                         DELTA_CHI2_95 * birge**2, visited)
             shift = res.x[i] - x_table[i]  # polished: the table's profile moved to the direct optimum
+            points = np.array(sorted(visited))
+            profiles[p.name] = np.column_stack([points[:, 0] + shift, (points[:, 1] - chi2_table) / birge**2])
             interval = (max(lo[i], interval[0] + shift), min(hi[i], interval[1] + shift), *interval[2:])
         else:
             interval = (max(lo[i], res.x[i] - 1.96 * u[i]), min(hi[i], res.x[i] + 1.96 * u[i]), False, False)
@@ -188,7 +194,8 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
         names=tuple(p.name for p in free), estimates=estimates, correlation=corr, chi2=chi2, n_points=obs.size,
         prediction=(model.direct if polished else predict)(res.x), band=band, u_eff=weights.u_total,
         warnings=tuple(warnings), evaluations=model.evaluations, message=str(res.message), table_error=table_error,
-        polished=polished, scatter=s, table_error_ratio=table_error_ratio, birge=birge,
+        polished=polished, scatter=s, table_error_ratio=table_error_ratio, birge=birge, profiles=profiles,
+        u_point=weights.u_eff,
     )
 
 
@@ -350,15 +357,19 @@ def _profile_chi2(residual, x_best, lo, hi, i, value, label) -> float:
     return float(np.sum(res.fun**2))
 
 
-def _profile_interval(residual, x_best, lo, hi, i, chi2_min, label, scale, delta=DELTA_CHI2_95):
-    """(lo95, hi95, open_lo, open_hi): where the profile chi2 crosses chi2_min + 3.84.
+def _profile_interval(residual, x_best, lo, hi, i, chi2_min, label, scale, delta=DELTA_CHI2_95, visited=None):
+    """(lo95, hi95, open_lo, open_hi): where the profile chi2 crosses chi2_min + 3.84 (delta).
 
     scale: the parameter's standard uncertainty; the crossings are found to 1e-3 of it.
+    visited: a list that receives every (value, profile chi2) evaluated (for the profile plot).
     """
+    visited = [] if visited is None else visited
     target = chi2_min + delta
 
     def excess(value):
-        return _profile_chi2(residual, x_best, lo, hi, i, value, label) - target
+        chi2 = _profile_chi2(residual, x_best, lo, hi, i, value, label)
+        visited.append((float(value), chi2))
+        return chi2 - target
 
     ends = []
     for bound in (lo[i], hi[i]):

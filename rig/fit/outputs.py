@@ -77,8 +77,8 @@ def summary_text(report: FitReport) -> str:
                  f"p = {g.p:.3g} against {kind}: {verdict} (misfit when p < 0.01)")
     u_point = np.median(full.u_eff)
     if report.extra_scatter is None:
-        lines.append(f"scatter:     the stated u alone (no extra scatter; median u per point {u_point:.3g}, "
-                     "common calibration and drift errors inside it)")
+        inside = ", the shared calibration and drift errors inside it" if obs.common is not None else ""
+        lines.append(f"scatter:     the stated u alone (no extra scatter named; median u per point {u_point:.3g}{inside})")
     else:
         how = "estimated so that chi2/dof = 1" if report.extra_scatter == "fit" else "as given"
         lines.append(f"scatter:     extra independent scatter s = {full.scatter:.3g} (--extra-scatter, {how}) beside "
@@ -138,33 +138,77 @@ def summary_text(report: FitReport) -> str:
     return "\n".join(lines) + "\n"
 
 
+X_LABELS = {"l/a": "rolling point l/a [1] ([Koziarski] eq. (30))", "alpha": "alpha' [1] ([Koziarski] eq. (21))",
+            "alpha'": "alpha' [1] ([Koziarski] eq. (21))", "c/a": "c/a [1]"}
+
+
 def draw(report: FitReport, path: Path) -> None:
-    """fit.png: data with 2u error bars, fitted curve with its 95 % band, weighted residuals."""
+    """fit.png: per fitted quantity, the data with 2u error bars (u with the shared errors) and the
+    curve of every effect set fitted (the chosen one bold, with its 95 % band); below it the
+    residuals over the point-to-point u (without the shared calibration and drift), with the
+    shared errors' size as a grey band; on the right the profile chi2 of each parameter with the
+    95 % threshold."""
     from rig.plotting import colors, new_figure
 
     obs, full = report.obs, report.full
-    figure = new_figure(figsize=(8, 7))
-    top, bottom = figure.subplots(2, 1, sharex=True, gridspec_kw=dict(height_ratios=[3, 1]))
-    for color, series in zip(colors() * 4, dict.fromkeys(obs.series)):
-        for quantity in dict.fromkeys(obs.quantity[obs.series == series]):
+    quantities = list(dict.fromkeys(obs.quantity))
+    params = [e for e in full.estimates if full.profiles and e.name in full.profiles]
+    rows = 2 * len(quantities)
+    figure = new_figure(figsize=(11 if params else 8, 3.2 * len(quantities) + 1.5), layout="constrained")
+    grid = figure.add_gridspec(rows, 2 if params else 1, height_ratios=[3, 1] * len(quantities),
+                               width_ratios=[2.2, 1] if params else [1])
+    palette = colors() * 4
+    chosen = report.decision
+    u_point = full.u_point if full.u_point is not None else full.u_eff
+    for q_index, quantity in enumerate(quantities):
+        top = figure.add_subplot(grid[2 * q_index, 0])
+        bottom = figure.add_subplot(grid[2 * q_index + 1, 0], sharex=top)
+        for s_index, (color, series) in enumerate(zip(palette, dict.fromkeys(obs.series[obs.quantity == quantity]))):
             at = np.flatnonzero((obs.series == series) & (obs.quantity == quantity))
             at = at[np.argsort(obs.x[at])]
-            label = f"{series}" if series == quantity else f"{series}: {quantity}"
-            top.errorbar(obs.x[at], obs.y[at], yerr=2 * full.u_eff[at], fmt="o", ms=3, color=color, label=label)
-            top.plot(obs.x[at], full.prediction[at], "-", color=color)
-            top.fill_between(obs.x[at], full.prediction[at] - 1.96 * full.band[at],
-                             full.prediction[at] + 1.96 * full.band[at], color=color, alpha=0.25, lw=0)
-            bottom.plot(obs.x[at], (obs.y[at] - full.prediction[at]) / full.u_eff[at], "o", ms=3, color=color)
-    if np.all(obs.x > 0) and obs.x.max() / obs.x.min() > 100:
-        top.set_xscale("log")
+            top.errorbar(obs.x[at], obs.y[at], yerr=2 * full.u_eff[at], fmt="o", ms=3, color=color,
+                         label=f"{series} (2u)" if series != quantity else "data (2u)")
+            for style, m in zip(("--", ":", "-.", (0, (1, 3))), [m for m in report.models if m is not chosen]):
+                name = f"{m.label} (LR p = {m.lr_p:.2g})" if not np.isnan(m.lr_p) else m.label
+                top.plot(obs.x[at], m.result.prediction[at], linestyle=style, lw=1, color=color,
+                         label=name if s_index == 0 else None)
+            top.plot(obs.x[at], chosen.result.prediction[at], "-", lw=1.8, color=color,
+                     label=f"{chosen.label} (chosen)" if s_index == 0 else None)
+            if chosen is report.models[-1]:
+                top.fill_between(obs.x[at], full.prediction[at] - 1.96 * full.band[at],
+                                 full.prediction[at] + 1.96 * full.band[at], color=color, alpha=0.2, lw=0)
+            shared = np.sqrt(np.clip(full.u_eff[at] ** 2 - u_point[at] ** 2, 0, None)) / u_point[at]
+            bottom.fill_between(obs.x[at], -shared, shared, color="0.85", lw=0)
+            bottom.plot(obs.x[at], (obs.y[at] - full.prediction[at]) / u_point[at], "o", ms=3, color=color)
+        if np.all(obs.x > 0) and obs.x.max() / obs.x.min() > 100:
+            top.set_xscale("log")
+        top.set_ylabel(_quantity_label(quantity))
+        top.legend(fontsize=6)
+        bottom.axhline(0.0, color="k", lw=0.8)
+        bottom.set_ylabel("(y - fit)/u_point", fontsize=8)
+        bottom.set_xlabel(X_LABELS.get(obs.x_label, obs.x_label))
     fitted = ", ".join(f"{e.name} = {e.value:.4g}" for e in full.estimates)
-    top.set_title(f"fit: {fitted}  (error bars 2u, band 95 %)", fontsize=9)
-    top.set_ylabel("y")
-    top.legend(fontsize=7)
-    bottom.axhline(0.0, color="k", lw=0.8)
-    bottom.set_ylabel("(y - fit)/u")
-    bottom.set_xlabel(obs.x_label)
+    g = report.goodness
+    figure.suptitle(f"{report.models[-1].label}: {fitted}; chi2/dof = {g.chi2:.3g}/{g.dof}, p = {g.p:.2g}"
+                    + ("  - MISFIT: see summary.txt" if g.misfit else "") + "\nresiduals over the point-to-point u; "
+                    "grey: size of the shared calibration/drift error", fontsize=9)
+    for k, e in enumerate(params):
+        ax = figure.add_subplot(grid[k * rows // len(params):(k + 1) * rows // len(params), 1])
+        curve = full.profiles[e.name]
+        ax.plot(curve[:, 0], curve[:, 1], "o-", ms=3, label=f"profile of {e.name}")
+        ax.axhline(3.84, color="r", lw=0.8, label="95 % (Delta chi2 = 3.84)")
+        ax.axvspan(e.lo95, e.hi95, color="r", alpha=0.1)
+        ax.set_xlabel(f"{e.name} [{e.unit}]")
+        ax.set_ylabel("profile Delta chi2")
+        width = max(e.hi95 - e.lo95, 1e-12)
+        ax.set_xlim(max(e.lo95 - 1.5 * width, float(curve[:, 0].min())), min(e.hi95 + 1.5 * width, float(curve[:, 0].max())))
+        ax.set_ylim(0, 12.0)
+        ax.legend(fontsize=6)
     figure.savefig(path, format="png", dpi=110)
+
+
+def _quantity_label(quantity: str) -> str:
+    return QUANTITY_LABELS.get(quantity, quantity)
 
 
 def write_outputs(report: FitReport, directory: str | Path, *, plot: bool = True) -> list[Path]:
