@@ -129,6 +129,8 @@ def summary_text(report: FitReport) -> str:
     if np.isfinite(full.table_error):
         how += (f"; at the optimum max |table - direct| = {full.table_error:.2g}, "
                 f"{full.table_error_ratio:.2g} of a point's u")
+        if full.direct_checked < obs.size:
+            how += f" (checked at {full.direct_checked} of the {obs.size} points, spread evenly; no polish)"
     else:
         how += "; no direct-solve check"
     if obs.stand is not None:
