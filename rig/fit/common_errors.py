@@ -114,7 +114,7 @@ def read_common_errors(cal: pd.DataFrame, readings: pd.DataFrame, f_n: np.ndarra
                          "sensitivity's part at the fitted F_y")
         else:
             notes.append("dynamometer calibrated more than once: calibration errors treated as independent")
-    drift, note = drift_covariance(readings, cal, f_n, geometries)
+    drift, note = drift_walk(readings, cal, f_n, geometries)
     notes.append(note)
     if calibration is None and drift is None:
         return None, notes
@@ -126,6 +126,13 @@ def read_common_errors(cal: pd.DataFrame, readings: pd.DataFrame, f_n: np.ndarra
 
 
 def drift_covariance(readings: pd.DataFrame, cal: pd.DataFrame, f_n: np.ndarray, geometries) -> tuple:
+    """(N, N) covariance of y from the zero drift (or None) and the note: :func:`drift_walk` made dense
+    (small N only; the fit keeps the walk in O(N) form)."""
+    walk, note = drift_walk(readings, cal, f_n, geometries)
+    return (None if walk is None else walk.dense()), note
+
+
+def drift_walk(readings: pd.DataFrame, cal: pd.DataFrame, f_n: np.ndarray, geometries) -> tuple:
     """Covariance of y = F_y/F_N from the dynamometer's zero drift since the calibration took the zero
     (a RandomWalk, or None with the note saying why).
 
