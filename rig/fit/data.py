@@ -14,7 +14,6 @@ The data is never modified; NaN in a used column is a ParameterError naming the 
 from __future__ import annotations
 
 import math
-import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -371,20 +370,6 @@ def _stand_a_observations(table: pd.DataFrame, log: Path, scene, stand, path: Pa
         fixed_effects=dict(spec.effects), source=f"{path} (stand A, scene {scene.name})",
         stand=stand, geometry=geometries, notes=tuple(notes), common=common,
     )
-
-
-def is_digitised(path: str | Path, sidecar: str | Path | None) -> bool:
-    """True for a digitised export: a sidecar given or a .toml beside the .csv that is a sidecar."""
-    path = Path(path)
-    if sidecar is not None:
-        return True
-    toml = path.with_suffix(".toml")
-    if path.suffix != ".csv" or not toml.is_file():
-        return False
-    try:
-        return "datasets" in tomllib.loads(toml.read_text(encoding="utf-8-sig"))
-    except tomllib.TOMLDecodeError:
-        return True  # let the sidecar reader name the syntax error
 
 
 RUN_LOADERS = {"yoke": _stand_a_observations}  # stand name -> loader of its reduced table (load_run)
