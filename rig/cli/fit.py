@@ -39,9 +39,17 @@ def add_parser(subparsers: argparse._SubParsersAction) -> argparse.ArgumentParse
                         "digitised CSV with its TOML sidecar")
     parser.add_argument("--params", required=True, help="free parameters in nesting order, e.g. mu,psi")
     parser.add_argument("--scene", default=None, help="scene of a stand run (default: the one stored in the log)")
+    parser.add_argument("--force-scene", action="store_true",
+                        help="fit with --scene even where it differs from the log's stored scene (stand, geometry, "
+                        "contact law, loads); without it a difference is an error")
     parser.add_argument("--effects", default=None, metavar="NAME=VALUE,...", help="fixed effect values, e.g. psi=1.2")
     parser.add_argument("--start", default=None, metavar="NAME=VALUE,...", help="start values of free parameters")
     parser.add_argument("--sigma", default=None, help="u of a digitised y: VALUE or DATASET=VALUE,...")
+    parser.add_argument("--extra-scatter", default=None, metavar="S|fit",
+                        help="an independent scatter S added to every point's u (u^2 + S^2) [units of the fitted "
+                        "quantity], or 'fit' to estimate it (chi2/dof = 1); default none: the stated u alone")
+    parser.add_argument("--sigma-x", default=None, help="u of a digitised x (its axis's units): VALUE or "
+                        "DATASET=VALUE,...; carried to y by the effective variance (default: x exact)")
     parser.add_argument("--sidecar", type=Path, default=None, help="TOML sidecar (default: DATA.toml)")
     parser.add_argument("--n", type=int, default=None, help="contact grid cells across 2a (default: scene's, 16)")
     parser.add_argument("--polish", choices=("auto", "check", "never", "always"), default="auto",
@@ -60,8 +68,9 @@ def main(args: argparse.Namespace) -> int:
 
     report = fit_data(
         args.data, [p.strip() for p in args.params.split(",") if p.strip()], sidecar=args.sidecar, sigma=args.sigma,
+        sigma_x=args.sigma_x,
         scene=args.scene, effects=_pairs(args.effects, "--effects"), start=_pairs(args.start, "--start"), n=args.n,
-        polish=args.polish,
+        polish=args.polish, force_scene=args.force_scene, extra_scatter=args.extra_scatter,
     )
     write_outputs(report, args.output, plot=not args.no_plot)
     print(summary_text(report), end="")

@@ -29,6 +29,7 @@ import numpy as np
 import pandas as pd
 
 from rig.errors import ParameterError
+from rig.fit.covariance import RandomWalk, StructuredCovariance
 
 CAL = "dynamometer_10_"
 CALIBRATION_COLUMNS = ("sensitivity_V_N", "u_sensitivity_V_N", "u_offset_V", "cov_sensitivity_offset_V2_N")
@@ -41,7 +42,9 @@ class CommonErrors:
 
     sensitivity S [V/N], u_sensitivity [V/N], u_offset [V], cov_sensitivity_offset [V^2/N]: the
     calibration record (sensitivity None: no calibration part); offset_slope: b = dy/ds0 [1/V]
-    per point; fixed: (N, N) part that does not depend on y (the zero drift) or None.
+    per point; fixed: an (N, N) part that does not depend on y, or None; walk: the zero drift
+    (rig.fit.covariance.RandomWalk), or None. Held in O(N) memory (:meth:`structured`) unless
+    ``fixed`` is given.
     """
 
     sensitivity: float | None
@@ -50,20 +53,48 @@ class CommonErrors:
     cov_sensitivity_offset: float
     offset_slope: np.ndarray
     fixed: np.ndarray | None
+    walk: RandomWalk | None = None
+
+    def low_rank(self, y: np.ndarray | None) -> np.ndarray | None:
+        """G (N, m) with G G^T the calibration's covariance at the values y (None: the offset's part only)."""
+        if self.sensitivity is None:
+            return None
+        b = self.offset_slope
+        if y is None:
+            return (b * self.u_offset)[:, None]
+        a = -np.asarray(y, dtype=float) / self.sensitivity
+        sigma = np.array([[self.u_sensitivity**2, self.cov_sensitivity_offset],
+                          [self.cov_sensitivity_offset, self.u_offset**2]])
+        values, vectors = np.linalg.eigh(sigma)
+        root = vectors * np.sqrt(np.clip(values, 0.0, None))  # Sigma = root root^T
+        return np.column_stack([a, b]) @ root
+
+    def variance(self, y: np.ndarray | None) -> np.ndarray:
+        """The diagonal of :meth:`covariance` in O(N)."""
+        out = np.zeros(self.offset_slope.size)
+        if self.fixed is not None:
+            out = out + np.diag(self.fixed)
+        if self.walk is not None:
+            out = out + self.walk.variance()
+        g = self.low_rank(y)
+        return out if g is None else out + np.sum(g**2, axis=1)
 
     def covariance(self, y: np.ndarray | None) -> np.ndarray:
         """(N, N) covariance [1] with the sensitivity's part at the values y (the true y's estimate);
-        y None: without the sensitivity's part (the offset and the drift only)."""
+        y None: without the sensitivity's part (the offset and the drift only). For small N and
+        tests; the fit uses :meth:`structured`."""
         b = self.offset_slope
         out = np.zeros((b.size, b.size)) if self.fixed is None else self.fixed.copy()
-        if self.sensitivity is None:
-            return out
-        out += np.outer(b, b) * self.u_offset**2
-        if y is not None:
-            a = -np.asarray(y, dtype=float) / self.sensitivity
-            cross = np.outer(a, b)
-            out += np.outer(a, a) * self.u_sensitivity**2 + (cross + cross.T) * self.cov_sensitivity_offset
-        return out
+        if self.walk is not None:
+            out += self.walk.dense()
+        g = self.low_rank(y)
+        return out if g is None else out + g @ g.T
+
+    def structured(self, y: np.ndarray | None, independent: np.ndarray) -> StructuredCovariance:
+        """diag(independent) + this covariance at y, in O(N) form (``fixed`` must be None)."""
+        if self.fixed is not None:
+            raise ValueError("a dense common covariance has no structured form")
+        return StructuredCovariance(independent, self.low_rank(y), self.walk)
 
 
 def read_common_errors(cal: pd.DataFrame, readings: pd.DataFrame, f_n: np.ndarray,
@@ -83,19 +114,27 @@ def read_common_errors(cal: pd.DataFrame, readings: pd.DataFrame, f_n: np.ndarra
                          "sensitivity's part at the fitted F_y")
         else:
             notes.append("dynamometer calibrated more than once: calibration errors treated as independent")
-    drift, note = drift_covariance(readings, cal, f_n, geometries)
+    drift, note = drift_walk(readings, cal, f_n, geometries)
     notes.append(note)
     if calibration is None and drift is None:
         return None, notes
     if calibration is None:
-        return CommonErrors(None, 0.0, 0.0, 0.0, np.zeros(f_n.size), drift), notes
+        return CommonErrors(None, 0.0, 0.0, 0.0, np.zeros(f_n.size), None, drift), notes
     sensitivity, u_sensitivity, u_offset, cov_so = map(float, calibration)
     return CommonErrors(sensitivity, u_sensitivity, u_offset, cov_so, -_levers(geometries) / (sensitivity * f_n),
-                        drift), notes
+                        None, drift), notes
 
 
 def drift_covariance(readings: pd.DataFrame, cal: pd.DataFrame, f_n: np.ndarray, geometries) -> tuple:
-    """Covariance of y = F_y/F_N from the dynamometer's zero drift since the calibration took the zero.
+    """(N, N) covariance of y from the zero drift (or None) and the note: :func:`drift_walk` made dense
+    (small N only; the fit keeps the walk in O(N) form)."""
+    walk, note = drift_walk(readings, cal, f_n, geometries)
+    return (None if walk is None else walk.dense()), note
+
+
+def drift_walk(readings: pd.DataFrame, cal: pd.DataFrame, f_n: np.ndarray, geometries) -> tuple:
+    """Covariance of y = F_y/F_N from the dynamometer's zero drift since the calibration took the zero
+    (a RandomWalk, or None with the note saying why).
 
     The zero walks as an input-referred random walk (sensors.noise.RandomWalkDrift) amplified g
     times: cov(z_i, z_j) = g^2 D^2 min(t_i, t_j) [V^2] with t the zero's age at each point (the
@@ -113,8 +152,8 @@ def drift_covariance(readings: pd.DataFrame, cal: pd.DataFrame, f_n: np.ndarray,
         return None, "dynamometer 10's zero drift is off in this log: no covariance between points from it"
     sens = cal[CAL + "sensitivity_V_N"].to_numpy(dtype=float)
     b = _levers(geometries) / (sens * f_n)
-    cov = gain[0] ** 2 * rate[0] * np.minimum.outer(age, age) * np.outer(b, b)
-    return cov, (f"dynamometer 10's zero drift since the calibration (random walk, g D = "
+    walk = RandomWalk(float(gain[0] ** 2 * rate[0]), age, b)
+    return walk, (f"dynamometer 10's zero drift since the calibration (random walk, g D = "
                  f"{gain[0] * math.sqrt(rate[0]):.3g} V/s^0.5): covariance g^2 D^2 min(t_i, t_j) between "
                  f"points (t = {age.min():.0f}-{age.max():.0f} s after the zero) added to the generalised "
                  "least squares")

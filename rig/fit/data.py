@@ -14,7 +14,6 @@ The data is never modified; NaN in a used column is a ParameterError naming the 
 from __future__ import annotations
 
 import math
-import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -47,7 +46,8 @@ class Observations:
 
     quantity: "nu_T", "nu_v", "nu_0" (contact coefficients) or "F_y_per_F_N" (= mu nu_v);
     y, u: value and standard uncertainty [1]; x: the plotted abscissa (x_label names it);
-    l, c: rolling point [units of a]; u_l: its standard uncertainty (0 when exact);
+    l, c: rolling point [units of a]; u_l: the standard uncertainty of the measured regressor
+    (``regressor``: l_over_a for a run, the x axis of a digitised curve; 0 when exact);
     alpha: alpha' [1] where fixed by the data, NaN where alpha' = mu alpha_per_mu;
     b_over_a [1]; series: label of each point's curve; stand: the Stand when the data is a run;
     common: errors shared between points (rig.fit.common_errors: the dynamometer's one calibration
@@ -73,6 +73,7 @@ class Observations:
     geometry: object | None = None
     notes: tuple[str, ...] = field(default_factory=tuple)
     common: CommonErrors | None = None
+    regressor: str = "l_over_a"
 
     @property
     def size(self) -> int:
@@ -84,7 +85,7 @@ class Observations:
         variance at the measured y, where the reduction propagated them."""
         if self.common is None:
             return self.u
-        return np.sqrt(np.clip(self.u**2 - np.diag(self.common.covariance(self.y)), 0.0, None))
+        return np.sqrt(np.clip(self.u**2 - self.common.variance(self.y), 0.0, None))
 
     @property
     def mu_dependent(self) -> bool:
@@ -101,15 +102,17 @@ def _finite(name: str, values: np.ndarray, rows: np.ndarray | None = None) -> np
     return values
 
 
-def parse_sigma(given: str | float | Mapping[str, float] | None, datasets: list[str]) -> dict[str, float]:
-    """Uncertainty per dataset from "0.01", "nu_v=0.01,nu_0=0.005", a number or a mapping."""
+def parse_sigma(given: str | float | Mapping[str, float] | None, datasets: list[str], what: str = "sigma",
+                zero: bool = False) -> dict[str, float]:
+    """Uncertainty per dataset from "0.01", "nu_v=0.01,nu_0=0.005", a number or a mapping
+    (``what`` names it in errors; zero: 0 allowed)."""
     if given is None:
-        raise ParameterError("sigma", None, "the standard uncertainty of the digitised y, e.g. --sigma 0.01 "
+        raise ParameterError(what, None, "the standard uncertainty of the digitised y, e.g. --sigma 0.01 "
                              "or --sigma nu_v=0.01,nu_0=0.005 (the digitised format states none)")
     if isinstance(given, str) and "=" not in given:
         given = float(given) if _is_number(given) else given
     if isinstance(given, (int, float)) and not isinstance(given, bool):
-        value = validate.number("sigma", given, 0.0, lo_open=True)
+        value = validate.number(what, given, 0.0, lo_open=not zero)
         return {name: value for name in datasets}
     if isinstance(given, str):
         pairs = {}
@@ -117,11 +120,11 @@ def parse_sigma(given: str | float | Mapping[str, float] | None, datasets: list[
             key, _, value = item.partition("=")
             pairs[key.strip()] = float(value) if _is_number(value) else value.strip()
         given = pairs
-    validate.known_keys("dataset in sigma", given, datasets)
-    out = {name: validate.number(f"sigma.{name}", v, 0.0, lo_open=True) for name, v in given.items()}
+    validate.known_keys(f"dataset in {what}", given, datasets)
+    out = {name: validate.number(f"{what}.{name}", v, 0.0, lo_open=not zero) for name, v in given.items()}
     missing = [name for name in datasets if name not in out]
     if missing:
-        raise ParameterError(f"sigma.{missing[0]}", None, "a positive number for every dataset fitted")
+        raise ParameterError(f"{what}.{missing[0]}", None, "a positive number for every dataset fitted")
     return out
 
 
@@ -135,8 +138,12 @@ def _is_number(text: str) -> bool:
 
 def load_digitised(path: str | Path, sidecar: str | Path | None, sigma, *, model: str = "kinematic",
                    n: int = DEFAULT_N, datasets: list[str] | None = None,
-                   effects: Mapping[str, float] | None = None) -> Observations:
+                   effects: Mapping[str, float] | None = None, sigma_x=None) -> Observations:
     """Observations from a digitised contact curve: every dataset (or ``datasets``) of the export.
+
+    sigma: u of the digitised y per dataset; sigma_x: u of the digitised x (None: exact), a
+    number or "name=value,...", in the x axis's units; carried to y by the effective variance
+    (df/dx sigma_x)^2 with df/dx at the fitted parameters (rig.fit.engine).
 
     The sidecar's conditions must give shape, b_over_a, poisson and the two of alpha, l_over_a,
     c_over_a that are not the x axis; datasets must be nu_T, nu_v or nu_0 (magnitudes allowed).
@@ -152,6 +159,7 @@ def load_digitised(path: str | Path, sidecar: str | Path | None, sigma, *, model
     frames = digitised_frames(curves, spec, str(path))
     names = list(frames) if datasets is None else [validate.choice("dataset", d, list(frames)) for d in datasets]
     sigmas = parse_sigma(sigma, names)
+    sigmas_x = {name: 0.0 for name in names} if sigma_x is None else parse_sigma(sigma_x, names, "sigma-x", zero=True)
     x_col = validate.choice(f"x axis of {sidecar_path}", spec.x.column, X_COLUMNS)
     parts = []
     for name in names:
@@ -175,7 +183,7 @@ def load_digitised(path: str | Path, sidecar: str | Path | None, sigma, *, model
         shape = cond.get("shape")
         if not isinstance(shape, str):
             raise ParameterError("conditions.shape", shape, f"a shape name in the sidecar {sidecar_path}")
-        parts.append((name, ds.y.column, ds.y.magnitude, x, y, sigmas[name], cond_values, shape))
+        parts.append((name, ds.y.column, ds.y.magnitude, x, y, sigmas[name], cond_values, shape, sigmas_x[name]))
     shapes = {p[7] for p in parts}
     poissons = {float(p[6]["poisson"][0]) for p in parts}
     if len(shapes) != 1 or len(poissons) != 1:
@@ -188,15 +196,114 @@ def load_digitised(path: str | Path, sidecar: str | Path | None, sigma, *, model
         u=np.concatenate([np.full(p[3].size, p[5]) for p in parts]),
         x=np.concatenate([p[3] for p in parts]),
         x_label=spec.x.label,
-        l=cat("l_over_a"), c=cat("c_over_a"), u_l=np.zeros(quantity.size),
+        l=cat("l_over_a"), c=cat("c_over_a"), u_l=np.concatenate([np.full(p[3].size, p[8]) for p in parts]),
         alpha=_finite("alpha", cat("alpha")), alpha_per_mu=np.full(quantity.size, np.nan),
         b_over_a=cat("b_over_a"),
         series=np.concatenate([np.full(p[3].size, p[0]) for p in parts]),
         contact=ContactCondition(model, shapes.pop(), poissons.pop(), validate.integer("n", n, 4, 512)),
         fixed_effects=dict(effects or {}),
-        source=f"{path} (sidecar {sidecar_path}), u as given: {sigmas}",
+        source=f"{path} (sidecar {sidecar_path}), u as given: {sigmas}"
+               + (f", u of {x_col} as given: {sigmas_x}" if sigma_x is not None else f", {x_col} taken as exact"),
+        regressor=x_col,
         notes=tuple(f"{p[0]} is |{p[1]}|" for p in parts if p[2]),
     )
+
+
+REDUCED_COLUMNS = ("point", "l_over_a", "u_l_over_a", "c_over_a", "F_y_N", "u_F_y_N", "i_k")
+
+
+def read_run_table(path: str | Path) -> tuple[pd.DataFrame, Path]:
+    """(reduced table with a ``point`` column, path of the log) from a ``log.h5`` or a ``reduced.csv``
+    beside one; every unreadable, empty or header-only table is a DataFileError naming the file."""
+    from rig.fit.inputs import DataFileError
+    from rig.logbook.reduced import read_reduced
+
+    path = Path(path)
+    if path.suffix == ".csv":
+        log = path.with_name("log.h5")
+        try:
+            table = pd.read_csv(path)
+        except pd.errors.EmptyDataError:
+            raise DataFileError(path, "no columns (empty or blank)", "a reduced.csv with a header and data rows") \
+                from None
+        except (pd.errors.ParserError, UnicodeDecodeError, ValueError) as error:
+            raise DataFileError(path, f"not a readable CSV: {str(error).splitlines()[0][:120]}",
+                                "a reduced.csv as rig run writes it") from None
+    else:
+        log = path
+        table = read_reduced(path).reset_index()
+    if table.empty:
+        raise DataFileError(path, "a header and no data rows" if len(table.columns) else "no data",
+                            "a reduced table with at least one point")
+    return table, log
+
+
+class SceneMismatchError(ParameterError):
+    """--scene describes another run than the log's stored scene: names the first difference."""
+
+
+SCENE_LOAD_SETTINGS = ("normal_force_N",)  # settings whose set of values must agree (the loads)
+
+
+def scene_differences(given, stored) -> list[str]:
+    """What differs between a scene given for a fit and the scene stored in the log: the stand, its
+    parameters except mu (geometry, stiffness ...), the contact law (model, poisson, shape) and the
+    loads; each as "name: given vs stored". Empty when they describe the same stand and loads."""
+    out = []
+    if given.stand != stored.stand:
+        return [f"stand: {given.stand} vs {stored.stand}"]
+    names = sorted((set(given.parameters) | set(stored.parameters)) - {"mu"})
+    defaults = getattr(given.stand_class, "PARAMETERS", {})
+    for name in names:
+        default = getattr(defaults.get(name), "default", None)
+        a, b = given.parameters.get(name, default), stored.parameters.get(name, default)
+        if a != b:
+            out.append(f"{name}: {a} vs {b}")
+    for key in ("model", "poisson"):
+        a, b = getattr(given.contact, key, None), getattr(stored.contact, key, None)
+        if a != b:
+            out.append(f"contact {key}: {a} vs {b}")
+    for setting in SCENE_LOAD_SETTINGS:
+        a, b = (sorted({float(p.settings[setting]) for p in s.procedure.points() if setting in p.settings})
+                for s in (given, stored))
+        if a != b:
+            out.append(f"{setting}: {a} vs {b}")
+    return out
+
+
+def load_run(path: str | Path, scene=None, *, n: int | None = None, force_scene: bool = False) -> Observations:
+    """Observations from a stand run (``log.h5`` or its ``reduced.csv``), by the loader of its stand
+    (RUN_LOADERS: stand name -> function(table, log, scene, stand, path, n)).
+
+    scene: None (the scene stored in the log) or a scene that must describe the same stand,
+    geometry, contact law and loads as the stored one (scene_differences), else a
+    SceneMismatchError; force_scene: take the given scene anyway (the summary says so).
+    """
+    from rig.logbook.reader import read_metadata
+    from rig.scenes.load import parse_scene
+
+    table, log = read_run_table(path)
+    meta = read_metadata(log)
+    stored = parse_scene(meta.scene_toml, name=f"stored in {log}", source=str(log))
+    forced = []
+    if scene is None:
+        scene = stored
+    else:
+        differences = scene_differences(scene, stored)
+        if differences and not force_scene:
+            raise SceneMismatchError("scene", scene.name, f"the scene of {log} or --force-scene",
+                                     hint="it differs from the log's stored scene in " + "; ".join(differences[:3])
+                                     + (f" and {len(differences) - 3} more" if len(differences) > 3 else ""))
+        forced = [f"--force-scene: scene {scene.name} differs from the log's own in " + "; ".join(differences)] \
+            if differences else []
+    stand = scene.build_stand()
+    name = getattr(stand, "name", "")
+    if name not in RUN_LOADERS:
+        raise ParameterError("stand", name, "one of " + ", ".join(RUN_LOADERS) + " (the stands rig fit reads)")
+    obs = RUN_LOADERS[name](table, log, scene, stand, Path(path), n)
+    if forced:
+        obs = Observations(**{**obs.__dict__, "notes": tuple(forced) + obs.notes})
+    return obs
 
 
 def load_stand_a_run(path: str | Path, scene=None, *, n: int | None = None) -> Observations:
@@ -206,36 +313,34 @@ def load_stand_a_run(path: str | Path, scene=None, *, n: int | None = None) -> O
     in l/a or F_y (with a reason) are left out and counted in ``notes``; NaN anywhere else in
     a used column is an error.
     """
-    from rig.logbook.reader import read_calibration, read_metadata, read_readings, read_settings
-    from rig.logbook.reduced import read_reduced
-    from rig.scenes.load import parse_scene
+    obs = load_run(path, scene, n=n)
+    if obs.stand is None or getattr(obs.stand, "name", "") != "yoke":
+        raise ParameterError("stand", getattr(obs.stand, "name", None), "yoke (stand A)")
+    return obs
 
-    path = Path(path)
-    if path.suffix == ".csv":
-        table = pd.read_csv(path)
-        log = path.with_name("log.h5")
-        if not log.is_file():
-            raise ParameterError("DATA", str(path), "a reduced.csv with its log.h5 beside it (for F_N, Delta h)")
-    elif path.suffix in (".h5", ".hdf5"):
-        log = path
-        table = read_reduced(path).reset_index()
-    else:
-        raise ParameterError("DATA", str(path), "a log.h5, a reduced.csv, or a digitised .csv with a .toml sidecar")
-    meta = read_metadata(log)
-    if scene is None:
-        scene = parse_scene(meta.scene_toml, name=f"scene of {log}", source=str(log))
-    stand = scene.build_stand()
-    if getattr(stand, "name", "") != "yoke":
-        raise ParameterError("stand", getattr(stand, "name", stand), "yoke (stand A); stand B fits are not done")
+
+def _stand_a_observations(table: pd.DataFrame, log: Path, scene, stand, path: Path, n: int | None) -> Observations:
+    """Stand A (the yoke): see :func:`load_stand_a_run`."""
+    from rig.logbook.reader import read_calibration, read_readings, read_settings
+
     settings = read_settings(log)
-    for column in ("point", "l_over_a", "u_l_over_a", "c_over_a", "F_y_N", "u_F_y_N", "i_k"):
+    for column in REDUCED_COLUMNS:
         if column not in table.columns:
             raise ParameterError("DATA column", column, f"present in {path} (a stand-A reduced table)")
     table = table.copy()  # the caller's frame is never modified
-    usable = np.isfinite(table[["l_over_a", "F_y_N", "i_k"]].to_numpy()).all(axis=1)
+    numeric = table[list(REDUCED_COLUMNS)].apply(pd.to_numeric, errors="coerce")
+    usable = np.isfinite(numeric[["l_over_a", "F_y_N", "i_k"]].to_numpy(dtype=float)).all(axis=1)
     dropped = int((~usable).sum())
-    table = table[usable]
-    rows = table["point"].to_numpy()
+    if not usable.any():
+        raise ParameterError("DATA", str(path), "at least one point with finite l_over_a, F_y_N and i_k",
+                             hint=f"all {usable.size} rows have NaN or no number there (see the reduction's reason)")
+    table = numeric[usable]
+    points = table["point"].to_numpy()
+    if not np.all(np.isin(points, settings.index.to_numpy())):
+        missing = points[~np.isin(points, settings.index.to_numpy())]
+        raise ParameterError("DATA point", f"{missing[0]:g} in {path}", f"a point of {log} "
+                             f"(0-{len(settings) - 1}): the reduced table is not from this log")
+    rows = points.astype(int)
     f_n = settings.loc[rows, "normal_force_N"].to_numpy(dtype=float)
     delta_h = settings.loc[rows, "delta_h_m"].to_numpy(dtype=float)
     geometries = [stand.params.geometry_at(float(d)) for d in delta_h]
@@ -267,15 +372,4 @@ def load_stand_a_run(path: str | Path, scene=None, *, n: int | None = None) -> O
     )
 
 
-def is_digitised(path: str | Path, sidecar: str | Path | None) -> bool:
-    """True for a digitised export: a sidecar given or a .toml beside the .csv that is a sidecar."""
-    path = Path(path)
-    if sidecar is not None:
-        return True
-    toml = path.with_suffix(".toml")
-    if path.suffix != ".csv" or not toml.is_file():
-        return False
-    try:
-        return "datasets" in tomllib.loads(toml.read_text(encoding="utf-8-sig"))
-    except tomllib.TOMLDecodeError:
-        return True  # let the sidecar reader name the syntax error
+RUN_LOADERS = {"yoke": _stand_a_observations}  # stand name -> loader of its reduced table (load_run)

@@ -9,8 +9,9 @@ with f linearised in l gives exactly this chi2 with df/dl taken *at theta* (Orea
 variance; Deming's regression for a straight line). df/dl therefore moves with theta inside the
 minimisation: held fixed, the weights do not see that a larger slope also spreads the data, and
 the estimate is attenuated like a least-squares slope on a noisy regressor (measured on stand-A
-runs: mu 0.13 % low, docs/fit.md). The residuals are whitened with the Cholesky factor of
-V(theta) and minimised with scipy.optimize.least_squares (trust-region reflective, bounds = the
+runs: mu 0.13 % low, docs/fit.md). The residuals are whitened by a linear map W with
+|W r|^2 = r^T V^-1 r (Weights: V's O(N) structured form, rig.fit.covariance, so no N x N matrix is
+formed; the Cholesky factor of V where a dense common covariance is given) and minimised with scipy.optimize.least_squares (trust-region reflective, bounds = the
 ranges).
 
 95 % interval of a parameter: the values where the profile chi2 (minimised over the others)
@@ -29,13 +30,18 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.linalg import solve_triangular
 from scipy.optimize import brentq, least_squares
+from scipy.stats import chi2 as chi2_dist
 
 from rig.errors import ConvergenceError, ParameterError
 from rig.fit.forward import ForwardModel
 
 DELTA_CHI2_95 = 3.841458820694124  # chi2 quantile 0.95, 1 degree of freedom
+MISFIT_ALPHA = 0.01  # chi2 p-value below which the data scatter more than their u explains
 CORRELATION_LIMIT = 0.95
 DL_STEP = 1e-3  # [units of a] finite-difference step of df/dl
+DIRECT_CHECK_POINTS = 200  # at most this many points get direct solves for the table check (no polish beyond)
+TABLE_ERROR_FRACTION = 0.2  # table-vs-direct error, as a fraction of a point's u, above which the fit warns
+COVARIANCE_FORM = "structured"  # "dense": the N x N Cholesky form (tests compare the two on small data)
 RETRY_NFEV_PER_PARAMETER = 1000  # evaluations of a second attempt when the first's 100 a parameter ran out
 
 
@@ -75,6 +81,11 @@ class FitResult:
     table_error: float = float("nan")
     polished: bool = False
     scatter: float = 0.0
+    table_error_ratio: float = float("nan")
+    birge: float = 1.0
+    direct_checked: int = 0  # points whose table value was checked against direct solves
+    profiles: dict | None = None  # name -> (k, 2) array of (value, profile chi2 - minimum) [in Birge-scaled chi2]
+    u_point: np.ndarray | None = None  # the point-to-point part of u_eff (without the shared errors)
 
     @property
     def k(self) -> int:
@@ -97,14 +108,18 @@ class FitResult:
 
 
 def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, polish: str = "auto",
-        polish_ratio: float = 0.2, label: str = "", scatter: float | None = 0.0) -> FitResult:
+        polish_ratio: float = 0.2, label: str = "", scatter: float | None = 0.0,
+        widen_misfit: bool = False) -> FitResult:
     """Fit ``model`` to its observations from ``start``; see the module docstring.
 
     polish: "auto" (direct-solve refit of the estimate when max |table - direct| at the
     optimum exceeds polish_ratio * min u; the table's profile intervals and covariance are then
     moved to the polished estimate), "check" (report table - direct, never refit), "never" or
     "always". scatter: independent scatter s added to every point's u (u_eff^2 += s^2)
-    [units of y]; None estimates it (see estimate_scatter).
+    [units of y]; None estimates it (see estimate_scatter). widen_misfit: where chi2 of the
+    fit has p < MISFIT_ALPHA against its degrees of freedom, widen u and the intervals by the Birge
+    ratio R = sqrt(chi2/dof) (every u scaled by R: u times R, the profile threshold 3.84 R^2;
+    FitResult.birge says so) - for data whose u is a guess (a digitised curve's --sigma).
     """
     obs = model.obs
     free = model.free
@@ -126,23 +141,50 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
     slopes = _slopes(predict, res.x, lo, hi)
     jac = np.column_stack([-weights(column) for column in slopes.T]) if slopes.size else slopes
     cov, corr = _covariance(jac)
-    u = np.sqrt(np.clip(np.diag(cov), 0.0, None))
     x_table, chi2_table = res.x, chi2
     table_error = float("nan")
     polished = False
+    table_error_ratio = float("nan")
+    checked = obs.size
     if polish != "never":
-        table_error = float(np.max(np.abs(model.direct(res.x) - model.predict(res.x))))
-        if polish == "always" or (polish == "auto" and table_error > polish_ratio * float(np.min(obs.u))):
+        if obs.size > DIRECT_CHECK_POINTS:  # direct solves at a spread sample of the points
+            at = np.unique(np.linspace(0, obs.size - 1, DIRECT_CHECK_POINTS).round().astype(int))
+            difference = np.abs(model.direct(res.x, at=at) - model.predict(res.x)[at])
+            u_at = weights.u_total[at]
+            checked = at.size
+        else:
+            difference = np.abs(model.direct(res.x) - model.predict(res.x))
+            u_at = weights.u_total
+        table_error = float(np.max(difference))
+        table_error_ratio = float(np.max(difference / u_at))
+        if obs.size > DIRECT_CHECK_POINTS:
+            pass  # a direct-solve refit of this many points is out of reach: the check is reported, never applied
+        elif polish == "always" or (polish == "auto" and table_error > polish_ratio * float(np.min(obs.u))):
             res = _minimise(Objective(model, s, model.direct).residual, res.x, lo, hi, label,
                             max_nfev=20 * (len(free) + 1))
             chi2 = float(np.sum(res.fun**2))
             polished = True
+    dof = obs.size - len(free)
+    birge = 1.0
+    if widen_misfit and dof > 0 and chi2 > dof and chi2_dist.sf(chi2, dof) < MISFIT_ALPHA:
+        birge = float(np.sqrt(chi2 / dof))  # of the final chi2 (after a polish)
+        cov = cov * birge**2
+    u = np.sqrt(np.clip(np.diag(cov), 0.0, None))
     warnings = []
+    if table_error_ratio > TABLE_ERROR_FRACTION and not polished:
+        warnings.append(f"the table/node interpolation errs by up to {table_error:.2g} at the optimum, "
+                        f"{table_error_ratio:.2g} of a point's u (> {TABLE_ERROR_FRACTION:g}): the estimates may "
+                        "carry it; refit with --polish always (direct solves at the optimum) or a finer --n")
     intervals = []
+    profiles = {}
     for i, p in enumerate(free):
         if profile:
-            interval = _profile_interval(objective.residual, x_table, lo, hi, i, chi2_table, label, u[i])
+            visited = [(float(x_table[i]), chi2_table)]
+            interval = _profile_interval(objective.residual, x_table, lo, hi, i, chi2_table, label, u[i],
+                                         DELTA_CHI2_95 * birge**2, visited)
             shift = res.x[i] - x_table[i]  # polished: the table's profile moved to the direct optimum
+            points = np.array(sorted(visited))
+            profiles[p.name] = np.column_stack([points[:, 0] + shift, (points[:, 1] - chi2_table) / birge**2])
             interval = (max(lo[i], interval[0] + shift), min(hi[i], interval[1] + shift), *interval[2:])
         else:
             interval = (max(lo[i], res.x[i] - 1.96 * u[i]), min(hi[i], res.x[i] + 1.96 * u[i]), False, False)
@@ -164,7 +206,9 @@ def fit(model: ForwardModel, start: Sequence[float], *, profile: bool = True, po
         names=tuple(p.name for p in free), estimates=estimates, correlation=corr, chi2=chi2, n_points=obs.size,
         prediction=(model.direct if polished else predict)(res.x), band=band, u_eff=weights.u_total,
         warnings=tuple(warnings), evaluations=model.evaluations, message=str(res.message), table_error=table_error,
-        polished=polished, scatter=s,
+        polished=polished, scatter=s, table_error_ratio=table_error_ratio, birge=birge, profiles=profiles,
+        direct_checked=checked if polish != "never" else 0,
+        u_point=weights.u_eff,
     )
 
 
@@ -194,10 +238,18 @@ class Objective:
         if obs.common is None:
             return Weights(u_eff, None)
         prediction = self.predict(theta) if prediction is None else prediction
-        residual = obs.y - prediction
-        others = obs.common.covariance(None) + np.diag(u_eff**2)
-        adjusted = prediction + from_l * np.linalg.solve(others, residual)
-        return Weights(u_eff, obs.common.covariance(adjusted))
+        adjusted = prediction
+        if np.any(from_l > 0):
+            residual = obs.y - prediction
+            if COVARIANCE_FORM == "dense" or obs.common.fixed is not None:
+                others = obs.common.covariance(None) + np.diag(u_eff**2)
+                adjusted = prediction + from_l * np.linalg.solve(others, residual)
+            else:
+                floor = np.maximum(u_eff**2, 1e-9 * obs.common.variance(None) + 1e-300)
+                adjusted = prediction + from_l * obs.common.structured(None, floor).solve(residual)
+        if COVARIANCE_FORM == "dense" or obs.common.fixed is not None:
+            return Weights(u_eff, obs.common.covariance(adjusted))
+        return Weights(u_eff, obs.common, adjusted)
 
     def residual(self, theta: np.ndarray) -> np.ndarray:
         prediction = self.predict(theta)
@@ -205,24 +257,34 @@ class Objective:
 
 
 class Weights:
-    """Whitening of residuals: L^-1 r with V = diag(u_eff^2) + C = L L^T (diagonal without C).
+    """Whitening of residuals: a linear map W with |W r|^2 = r^T V^-1 r, V = diag(u_eff^2) + C.
 
-    u_eff: the independent u per point; common: C or None. The diagonal is kept at least
-    (1 + 1e-9) diag C so that V stays positive definite when u_eff is 0.
+    u_eff: the independent u per point; common: None (V diagonal, W r = r / u_eff), C as an
+    (N, N) matrix (W = L^-1 with V = L L^T), or CommonErrors with the values ``at`` its
+    sensitivity's part is taken (W: rig.fit.covariance.StructuredCovariance.whiten, O(N) memory;
+    W r is then N + K + m long). The diagonal is kept at least (1 + 1e-9) diag C so that V stays
+    positive definite when u_eff is 0.
     """
 
-    def __init__(self, u_eff: np.ndarray, common: np.ndarray | None) -> None:
+    def __init__(self, u_eff: np.ndarray, common, at: np.ndarray | None = None) -> None:
         self.u_eff = u_eff
+        self.factor = None
+        self.structured = None
         if common is None:
-            self.factor = None
             self.u_total = u_eff
-        else:
+        elif isinstance(common, np.ndarray):
             v = common.copy()
             v[np.diag_indices_from(v)] = np.maximum(u_eff**2, 1e-9 * np.diag(common)) + np.diag(common)
             self.factor = np.linalg.cholesky(v)
             self.u_total = np.sqrt(np.diag(v))
+        else:
+            shared = common.variance(at)
+            self.structured = common.structured(at, np.maximum(u_eff**2, 1e-9 * shared))
+            self.u_total = np.sqrt(self.structured.diagonal())
 
     def __call__(self, r: np.ndarray) -> np.ndarray:
+        if self.structured is not None:
+            return self.structured.whiten(r)
         if self.factor is None:
             return r / self.u_eff
         return solve_triangular(self.factor, r, lower=True, check_finite=False)
@@ -308,15 +370,19 @@ def _profile_chi2(residual, x_best, lo, hi, i, value, label) -> float:
     return float(np.sum(res.fun**2))
 
 
-def _profile_interval(residual, x_best, lo, hi, i, chi2_min, label, scale):
-    """(lo95, hi95, open_lo, open_hi): where the profile chi2 crosses chi2_min + 3.84.
+def _profile_interval(residual, x_best, lo, hi, i, chi2_min, label, scale, delta=DELTA_CHI2_95, visited=None):
+    """(lo95, hi95, open_lo, open_hi): where the profile chi2 crosses chi2_min + 3.84 (delta).
 
     scale: the parameter's standard uncertainty; the crossings are found to 1e-3 of it.
+    visited: a list that receives every (value, profile chi2) evaluated (for the profile plot).
     """
-    target = chi2_min + DELTA_CHI2_95
+    visited = [] if visited is None else visited
+    target = chi2_min + delta
 
     def excess(value):
-        return _profile_chi2(residual, x_best, lo, hi, i, value, label) - target
+        chi2 = _profile_chi2(residual, x_best, lo, hi, i, value, label)
+        visited.append((float(value), chi2))
+        return chi2 - target
 
     ends = []
     for bound in (lo[i], hi[i]):

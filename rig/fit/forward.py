@@ -76,11 +76,17 @@ class ForwardModel:
         nu = self._interpolated(values, mu, dl)
         return self._quantity(nu, mu)
 
-    def direct(self, theta: Sequence[float]) -> np.ndarray:
-        """Predicted y by direct solves at the exact parameter values (slow; for the polish)."""
+    def direct(self, theta: Sequence[float], at: np.ndarray | None = None) -> np.ndarray:
+        """Predicted y by direct solves at the exact parameter values (slow; for the polish);
+        at: indices of the points to evaluate (None: all)."""
         values = self.values(theta)
         mu = values.get("mu", np.nan)
-        return self._quantity(self._direct_nu(self._effects(values), mu, 0.0), mu)
+        nu = self._direct_nu(self._effects(values), mu, 0.0, at)
+        if at is None:
+            return self._quantity(nu, mu)
+        full = np.full((self.obs.size, 3), np.nan)
+        full[at] = nu
+        return self._quantity(full, mu)[at]
 
     def _quantity(self, nu: np.ndarray, mu: float) -> np.ndarray:
         q = self.obs.quantity
@@ -114,15 +120,20 @@ class ForwardModel:
     def _alpha(self, mu: float) -> np.ndarray:
         return np.where(np.isnan(self.obs.alpha), mu * self.obs.alpha_per_mu, self.obs.alpha)
 
-    def _direct_nu(self, effects: dict[str, float], mu: float, dl: float) -> np.ndarray:
+    def _direct_nu(self, effects: dict[str, float], mu: float, dl: float, at: np.ndarray | None = None) -> np.ndarray:
+        """Direct solves at every point (or the points ``at``); dl shifts the measured regressor
+        (obs.regressor: l/a, c/a or alpha')."""
         o = self.obs
-        alpha = self._alpha(mu)
-        out = np.empty((o.size, 3))
-        for i in range(o.size):
+        shift = {"l_over_a": 0.0, "c_over_a": 0.0, "alpha": 0.0}
+        shift[o.regressor] = dl
+        alpha = self._alpha(mu) + shift["alpha"]
+        points = np.arange(o.size) if at is None else np.asarray(at)
+        out = np.empty((points.size, 3))
+        for k, i in enumerate(points):
             r = solve(o.contact.model, shape=o.contact.shape, b_over_a=float(o.b_over_a[i]), alpha=float(alpha[i]),
-                      c_over_a=float(o.c[i]), l_over_a=float(o.l[i] + dl), poisson=o.contact.poisson,
-                      n=o.contact.n, **effects)
-            out[i] = (r.nu_T, r.nu_v, r.nu_0)
+                      c_over_a=float(o.c[i] + shift["c_over_a"]), l_over_a=float(o.l[i] + shift["l_over_a"]),
+                      poisson=o.contact.poisson, n=o.contact.n, **effects)
+            out[k] = (r.nu_T, r.nu_v, r.nu_0)
         return out
 
     def _table_nu(self, effects: dict[str, float], mu: float, dl: float) -> np.ndarray:

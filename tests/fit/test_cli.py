@@ -39,7 +39,7 @@ def test_rig_fit_writes_its_files_and_exits_0(tmp_path, capsys):
     assert sorted(models["rank"]) == [1, 2]
     assert np.allclose(models["aic"], models["chi2"] + 2 * models["k"])
     assert np.allclose(models["bic"], models["chi2"] + models["k"] * np.log(models["n_points"]))
-    assert "model choice" in (out / "summary.txt").read_text()
+    assert "effect sets" in (out / "summary.txt").read_text()
     assert "answer:" in capsys.readouterr().out
     assert data.read_bytes() == before
     assert not list(out.glob(".*tmp"))  # no temporary file left behind

@@ -1,0 +1,37 @@
+"""The coverage study in small (benchmarks/bench_fit_coverage.py, model mode): data drawn from the
+fit's own error model at a small stand-A run's points with Psi = 1 (null data), fitted with mu and
+Psi free. Two fixed seeds, without the profiles (intervals +-1.96 u; the profiles cost minutes
+under load): mu's interval holds the truth, the decision does not call for Psi and the goodness of
+fit does not flag a misfit. (The full study's numbers, with profiles: docs/fit.md.)"""
+
+from __future__ import annotations
+
+import importlib.util
+from pathlib import Path
+
+import pytest
+
+from rig.fit.forward import ForwardModel
+from rig.fit.parameters import parse_names
+from rig.fit.run import load_data
+from tests.fit.conftest import SMALL_STATIC_RATIO_RUN
+
+SCRIPT = Path(__file__).resolve().parents[2] / "benchmarks" / "bench_fit_coverage.py"
+
+
+@pytest.fixture(scope="module")
+def study():
+    spec = importlib.util.spec_from_file_location("bench_fit_coverage", SCRIPT)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_null_data_seeds(study, static_ratio_run):
+    obs = load_data(static_ratio_run / "reduced.csv")  # its scene's static_ratio 1.4 is the truth and in the model
+    mu = SMALL_STATIC_RATIO_RUN["mu"]
+    truth = ForwardModel(obs, parse_names(["mu"]), {}).predict([mu])
+    for seed in (1, 2):
+        r = study.one_model_seed(obs, truth, seed, mu, 1.0, False)
+        assert r["mu_covered"] and r["psi_covered"], r
+        assert not r["needs_psi"] and not r["misfit"], r
