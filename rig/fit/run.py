@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import time
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -12,6 +13,7 @@ from rig.fit import parameters as P
 from rig.fit.choice import RankedModel, rank_models
 from rig.fit.data import Observations, is_digitised, load_digitised, load_stand_a_run
 from rig.fit.engine import FitResult
+from rig.fit.stand_b import is_stand_b_run, load_stand_b_run
 
 
 @dataclass(frozen=True)
@@ -37,7 +39,7 @@ class FitReport:
 
 def load_data(data: str | Path, *, sidecar=None, sigma=None, scene=None, n: int | None = None,
               effects: Mapping[str, float] | None = None, datasets: Sequence[str] | None = None) -> Observations:
-    """Observations from a digitised curve (with sidecar and sigma) or a stand-A log / reduced.csv."""
+    """Observations from a digitised curve (with sidecar and sigma) or a stand-A or stand-B log / reduced.csv."""
     path = Path(data)
     if not path.is_file():
         raise ParameterError("DATA", str(path), "an existing log.h5, reduced.csv or digitised .csv")
@@ -52,9 +54,12 @@ def load_data(data: str | Path, *, sidecar=None, sigma=None, scene=None, n: int 
         from rig.scenes.load import load_scene
 
         scene = load_scene(scene)
-    obs = load_stand_a_run(path, scene, n=n)
+    if is_stand_b_run(path, scene):  # stand B's readings F_T, F_V, T_Mo (rig.fit.stand_b)
+        obs = load_stand_b_run(path, scene, n=n)
+    else:
+        obs = load_stand_a_run(path, scene, n=n)
     if effects:
-        obs = Observations(**{**obs.__dict__, "fixed_effects": {**obs.fixed_effects, **effects}})
+        obs = dataclasses.replace(obs, fixed_effects={**obs.fixed_effects, **effects})
     return obs
 
 
@@ -82,8 +87,8 @@ def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=Non
                              "no pressure-dependent mu (its mu(p0) per load is done for stand B only)")
     free_names = {p.name for p in free}
     if free_names & set(obs.fixed_effects):  # a free parameter is not also fixed by the scene
-        obs = Observations(**{**obs.__dict__, "fixed_effects": {
-            k: v for k, v in obs.fixed_effects.items() if k not in free_names}})
+        obs = dataclasses.replace(obs, fixed_effects={
+            k: v for k, v in obs.fixed_effects.items() if k not in free_names})
     if obs.size <= len(free):
         raise ParameterError("data points", obs.size, f"> {len(free)} (the number of free parameters)")
     fixed = {}

@@ -22,6 +22,7 @@ from rig.logbook.truth import read_truth
 from rig.logbook.units import DIMENSIONLESS
 from rig.reduction.table import DAMAGED
 from rig.runner.outputs import REDUCED_CSV
+from rig.runner.summary import with_off_truth
 from rig.stands.base import ContactSpec, Stand
 
 TRUTH_SOURCES = {
@@ -93,7 +94,7 @@ def reduce_to_files(stand: Stand, log_path: Path, contact: ContactSpec, out_dir:
     table = stand.reduce_log(log_path, contact)
     if not isinstance(table, pd.DataFrame):
         raise RigError(f"stand {stand.name!r}: reduce_log returned {type(table).__name__}, not a DataFrame")
-    table = attach_truth(table, read_truth_if_any(log_path))
+    table = with_off_truth(attach_truth(table, read_truth_if_any(log_path)))
     damaged = damaged_points(table)
     notes = tuple(table.attrs.get("notes", ()))
     csv = out_dir / REDUCED_CSV
