@@ -51,7 +51,7 @@ STAND = "disc_roller"
 CHANNELS = ("F_T", "F_V", "T_Mo")
 QUANTITY = {"F_T": "F_T_per_F_N", "F_V": "F_V_per_F_N", "T_Mo": "T_Mo_per_a_F_N"}
 """Observed quantity per instrument: F_T/F_N, F_V/F_N [1], T_Mo/(a F_N) [1]."""
-ALPHA_STEP = 0.02  # node spacing of the forward model in ln alpha' [1]
+ALPHA_STEP = 0.05  # node spacing of the forward model in ln alpha' [1]
 LN_ALPHA = np.arange(math.log(1e-3), math.log(1e5) + ALPHA_STEP, ALPHA_STEP)
 REGRESSOR_STEP = 1e-3  # finite-difference step of df/dl, df/dc [units of a]
 
@@ -133,8 +133,9 @@ class StandBObservations(Observations):
             return nu
         h = REGRESSOR_STEP
         y = lambda n: self.combine(n, mu)  # noqa: E731
-        slope_l = (y(self._at(key, mu, h, 0.0, True)) - y(self._at(key, mu, -h, 0.0, True))) / (2 * h)
-        slope_c = (y(self._at(key, mu, 0.0, h, True)) - y(self._at(key, mu, 0.0, -h, True))) / (2 * h)
+        here = y(self._at(key, mu, 0.0, 0.0, True))  # forward differences at the nearest node (shared solves)
+        slope_l = (y(self._at(key, mu, h, 0.0, True)) - here) / h
+        slope_c = (y(self._at(key, mu, 0.0, h, True)) - here) / h
         u_l = np.where(self.u_l > 0, self.u_l, 1.0)
         slope = np.sqrt(slope_l**2 + (slope_c * self.u_c / u_l) ** 2)
         norm = np.einsum("ij,ij->i", self.weights, self.weights)

@@ -91,8 +91,9 @@ def off_truth_lines(table: pd.DataFrame) -> list[str]:
     for index in flagged[:20]:
         row = zs.loc[index]
         worst = row.idxmax()
-        lines.append(f"  point {index}: {worst} = {table.loc[index, worst]:.4g} +- {table.loc[index, 'u_' + worst]:.2g} "
-                     f"against the truth {table.loc[index, 'true_' + worst]:.4g} (z = {row[worst]:.1f})")
+        value, u, true = (table.loc[index, prefix + worst] for prefix in ("", "u_", "true_"))
+        lines.append(f"  point {index}: {worst} = {value:.4g} +- {u:.2g} against the truth {true:.4g} "
+                     f"(z = {row[worst]:.1f})")
     if len(flagged) > 20:
         lines.append(f"  ... and {len(flagged) - 20} more")
     return lines

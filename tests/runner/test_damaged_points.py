@@ -78,6 +78,7 @@ def _reduce_damaged(log: Path, damage, capsys) -> pd.DataFrame:
 
 def _check_only_point_2_lost(table: pd.DataFrame, *reason_parts: str, good_csv: Path = OLD_CSV) -> None:
     good = pd.read_csv(good_csv, index_col="point")
+    table = table.drop(columns=[c for c in ("z_max", "off_truth") if c not in good])  # added since (summary.py)
     assert list(table.index) == [0, 1, 2, 3]
     pd.testing.assert_frame_equal(table.drop(index=2), good.drop(index=2), check_dtype=False)  # reason: empty
     numbers = table.drop(columns="reason").loc[2]
