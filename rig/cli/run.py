@@ -8,7 +8,9 @@ ADDRESS`` on the workers of a Dask scheduler (optional extra ``dask``); the two 
 other (``--jobs`` must stay 1 with a scheduler: the cluster sets the parallelism), and results
 are the same either way. Exit status: 0 every point done, 1 some points did not settle (listed in
 summary.txt), 2 bad input or another error (printed by rig.cli.main; among them a folder another
-run holds), 3 some points of the log were damaged (reduced to NaN, named in summary.txt).
+run holds), 3 some points of the log were damaged (reduced to NaN, named in summary.txt), 4 a twin
+run's reduced points are off their truth by more than their stated u allows (named first in
+summary.txt, ``off_truth`` in reduced.csv; rig.runner.summary).
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ from pathlib import Path
 
 from rig.cli.reduce import DAMAGED_STATUS
 from rig.runner import run_scene
+from rig.runner.summary import OFF_TRUTH_STATUS
 from rig.scenes import load_scene
 
 DEFAULT_SCENE = "default"
@@ -47,4 +50,8 @@ def main(args) -> int:
     report = run_scene(scene, out_dir, jobs=args.jobs, scheduler=args.scheduler)
     print(report.summary, end="")
     print(f"wrote {', '.join(report.files)} in {report.out_dir}")
-    return 1 if report.failures else DAMAGED_STATUS if report.damaged else 0
+    if report.failures:
+        return 1
+    if report.damaged:
+        return DAMAGED_STATUS
+    return OFF_TRUTH_STATUS if report.off_truth else 0

@@ -13,6 +13,8 @@ The data is never modified; NaN in a used column is a ParameterError naming the 
 
 from __future__ import annotations
 
+import dataclasses
+
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -302,7 +304,7 @@ def load_run(path: str | Path, scene=None, *, n: int | None = None, force_scene:
         raise ParameterError("stand", name, "one of " + ", ".join(RUN_LOADERS) + " (the stands rig fit reads)")
     obs = RUN_LOADERS[name](table, log, scene, stand, Path(path), n)
     if forced:
-        obs = Observations(**{**obs.__dict__, "notes": tuple(forced) + obs.notes})
+        obs = dataclasses.replace(obs, notes=tuple(forced) + obs.notes)
     return obs
 
 
@@ -372,4 +374,12 @@ def _stand_a_observations(table: pd.DataFrame, log: Path, scene, stand, path: Pa
     )
 
 
-RUN_LOADERS = {"yoke": _stand_a_observations}  # stand name -> loader of its reduced table (load_run)
+def _stand_b_observations(table, log, scene, stand, path, n) -> Observations:
+    """Stand B's readings F_T, F_V, T_Mo per point (rig.fit.stand_b; its forward model is stand B's own)."""
+    from rig.fit.stand_b import load_stand_b_run
+
+    return load_stand_b_run(path, scene, n=n)
+
+
+RUN_LOADERS = {"yoke": _stand_a_observations, "disc_roller": _stand_b_observations}
+"""Stand name -> loader of its run (load_run)."""

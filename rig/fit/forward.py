@@ -89,6 +89,8 @@ class ForwardModel:
         return self._quantity(full, mu)[at]
 
     def _quantity(self, nu: np.ndarray, mu: float) -> np.ndarray:
+        if hasattr(self.obs, "combine"):  # data with their own readings of the coefficients (rig.fit.stand_b)
+            return self.obs.combine(nu, mu)
         q = self.obs.quantity
         out = np.empty(q.size)
         for column, name in enumerate(("nu_T", "nu_v", "nu_0")):
@@ -110,6 +112,8 @@ class ForwardModel:
 
     def _node_values(self, effects: dict[str, float], mu: float, dl: float) -> np.ndarray:
         """(N, 3) nu_T, nu_v, nu_0 at the points for these effects (and mu when alpha' needs it)."""
+        if hasattr(self.obs, "coefficients"):  # data with their own forward model (rig.fit.stand_b)
+            return self.obs.coefficients(effects, mu, dl)
         if self.obs.stand is not None:
             return self._table_nu(effects, mu, dl)
         key = tuple(sorted(effects.items())) + (dl,)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import time
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -126,7 +127,7 @@ def load_data(data: str | Path, *, sidecar=None, sigma=None, sigma_x=None, scene
         scene = load_scene(scene)
     obs = load_run(path, scene, n=n, force_scene=force_scene)
     if effects:
-        obs = Observations(**{**obs.__dict__, "fixed_effects": {**obs.fixed_effects, **effects}})
+        obs = dataclasses.replace(obs, fixed_effects={**obs.fixed_effects, **effects})
     return obs
 
 
@@ -194,8 +195,8 @@ def fit_data(data: str | Path, params: Sequence[str], *, sidecar=None, sigma=Non
                              "no pressure-dependent mu (its mu(p0) per load is done for stand B only)")
     free_names = {p.name for p in free}
     if free_names & set(obs.fixed_effects):  # a free parameter is not also fixed by the scene
-        obs = Observations(**{**obs.__dict__, "fixed_effects": {
-            k: v for k, v in obs.fixed_effects.items() if k not in free_names}})
+        obs = dataclasses.replace(obs, fixed_effects={
+            k: v for k, v in obs.fixed_effects.items() if k not in free_names})
     if obs.size <= len(free):
         raise ParameterError("data points", obs.size, f"> {len(free)} (the number of free parameters)")
     fixed = {}

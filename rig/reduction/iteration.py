@@ -7,8 +7,10 @@ uses the fixed damping q = 1 - damping (or Wegstein's with a slope known at the 
 steps Wegstein's q = s/(s - 1) from the secant slope s of G, bounded to [Q_MIN, Q_MAX] (damping
 when g falls with mu, acceleration when it rises). A cap on the iterations ends hopeless cases with NaN and a reason. At the fixed point
 the slope s = d ln g/d ln mu is probed once: errors of the readings reach mu amplified by
-1/(1 - s), and s -> 1 in the linear regime (F_y independent of mu), where mu is not identifiable
-(NaN with the reason).
+1/|1 - s|, and s -> 1 where the measured ratio does not depend on mu - the linear regime (F_y
+independent of mu), or the peak of a ratio that rises and then falls with mu (stand B with
+plastic slip) - where mu is not identifiable (NaN with the reason). s > 1 (the ratio falls with mu)
+is a fixed point like any other, amplified by 1/(s - 1).
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ from rig import validate
 
 State = TypeVar("State")
 Q_MIN, Q_MAX = -5.0, 0.9  # bounds of Wegstein's q (the usual -5 <= q, and at least 10 % progress)
+Q_FALLING_MAX = 21.0  # bound of q = s/(s - 1) where g rises faster than mu (s > 1): s >= 1.05 [1]
 MAX_STEP_FACTOR = 10.0  # largest change of mu in one step [1]
 MAX_LOG_STEP = math.log(MAX_STEP_FACTOR)
 
@@ -37,8 +40,8 @@ class ReductionSettings:
     mu_v (mu_T) is reported as NaN (hard case 8); denominator_min: |D|/a of eq. (35) below which
     mu_T is NaN; min_counts: fewest counts per channel accepted (fewer: NaN, hard case 2);
     relative_step: Jacobian step in standard uncertainties (rig.reduction.uncertainty);
-    identifiability_min: smallest 1 - s accepted at the fixed point, s = d ln g/d ln mu (errors
-    in the readings are amplified by 1/(1 - s); s -> 1 in the linear regime, hard case 8);
+    identifiability_min: smallest |1 - s| accepted at the fixed point, s = d ln g/d ln mu (errors
+    in the readings are amplified by 1/|1 - s|; s -> 1 in the linear regime, hard case 8);
     significance: a reading or coefficient within this many of its own standard uncertainties of
     zero counts as zero - a friction reading that small does not drive alpha', a ratio with a
     denominator that small is not reported (hard case 8; 2 = the ~95 % level).
@@ -114,7 +117,7 @@ def solve_mu(estimate: Estimate, settings: ReductionSettings, probe: bool = True
         if math.isnan(slope):
             q = 1.0 - settings.damping
         else:
-            q = Q_MAX if slope == 1.0 else min(max(slope / (slope - 1.0), Q_MIN), Q_MAX)
+            q = wegstein_q(slope)
         step = min(max((1.0 - q) * (log_g - y), -MAX_LOG_STEP), MAX_LOG_STEP)
         y_prev, g_prev = y, log_g
         y += step
@@ -126,6 +129,19 @@ def solve_mu(estimate: Estimate, settings: ReductionSettings, probe: bool = True
     )
 
 
+def wegstein_q(slope: float) -> float:
+    """Wegstein's relaxation q = s/(s - 1) for the secant slope s of G, bounded.
+
+    s < 1 (g falls with mu, or rises more slowly than mu): q in [Q_MIN, Q_MAX]. s > 1 (g rises
+    faster than mu: the measured ratio falls with mu, as on the far side of the peak of stand B's
+    F_V/F_N with plastic slip): the plain iteration runs away from the fixed point, and q =
+    s/(s - 1) > 1 (a secant-Newton step towards it) is kept, up to Q_FALLING_MAX. s = 1: Q_MAX.
+    """
+    if slope > 1.0:
+        return min(slope / (slope - 1.0), Q_FALLING_MAX)
+    return Q_MAX if slope == 1.0 else min(max(slope / (slope - 1.0), Q_MIN), Q_MAX)
+
+
 PROBE = 1e-4  # relative step in mu for the slope of g at the fixed point [1]
 
 
@@ -133,11 +149,12 @@ def _checked(estimate: Estimate, mu: float, log_g: float, state, k: int, setting
     """Accept the fixed point only if g is not parallel to mu there (mu identifiable)."""
     g_probe, _, _ = estimate(mu * math.exp(PROBE))
     slope = (math.log(g_probe) - log_g) / PROBE if math.isfinite(g_probe) and g_probe > 0.0 else math.nan
-    if not (1.0 - slope >= settings.identifiability_min):
+    if not (abs(1.0 - slope) >= settings.identifiability_min):
         return FixedPoint(
             math.nan, state, k + 1,
-            f"mu not identifiable: d ln g/d ln mu = {slope:.4g} at mu = {mu:.6g} (needs <= "
-            f"{1.0 - settings.identifiability_min:g}; linear regime: the forces do not depend on mu, hard case 8)",
+            f"mu not identifiable: d ln g/d ln mu = {slope:.4g} at mu = {mu:.6g} (needs |1 - slope| >= "
+            f"{settings.identifiability_min:g}; the measured ratio does not depend on mu there: the linear regime, "
+            "or the peak of a ratio that is not monotone in mu, hard case 8)",
         )
     return FixedPoint(mu, state, k + 1, "", slope)
 

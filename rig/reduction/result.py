@@ -94,7 +94,9 @@ class ReducedPoint:
     of the 95 % interval (units in the names, e.g. ``l_m``; names without a unit are
     dimensionless); reasons: output name -> why it is NaN; iterations of the mu <-> alpha' loop;
     driver: the friction estimate that fed alpha'; propagation: the first-order model, whose
-    ``budget`` is split on first use (a reduced table does not need it: rig.reduction.table).
+    ``budget`` is split on first use (a reduced table does not need it: rig.reduction.table);
+    note: what the reader of a finite value must know (stand B: which root of a non-unique mu was
+    chosen and why, rig.reduction.stand_b), a ``note`` column of the row; None: no such column.
     """
 
     values: Mapping[str, float]
@@ -104,6 +106,7 @@ class ReducedPoint:
     iterations: int
     driver: str
     propagation: Propagation
+    note: str | None = None
 
     @functools.cached_property
     def budget(self) -> UncertaintyBudget:
@@ -123,6 +126,8 @@ class ReducedPoint:
         for name, reason in self.reasons.items():
             grouped.setdefault(reason, []).append(name)
         row["reason"] = "; ".join(f"{', '.join(names)}: {reason}" for reason, names in grouped.items())
+        if self.note is not None:
+            row["note"] = self.note
         return row
 
 
@@ -155,15 +160,19 @@ def _insignificant(guard: Guard, values: Mapping[str, float], u: Mapping[str, fl
 
 def reduce_stand_point(evaluate: Callable[..., Evaluation], inputs: InputSet, numerators: Mapping[str, Numerator],
                        guards: tuple[Guard, ...], driven: tuple[str, ...], settings: ReductionSettings,
-                       **chain: object) -> ReducedPoint:
+                       *, driver: str | None = None, **chain: object) -> ReducedPoint:
     """The step both stands' ``reduce`` share: choose the readings that may drive alpha'
     (rig.reduction.drivers), bind the stand's chain ``evaluate(values, start, settings=..., **chain)``
     and reduce the point (:func:`reduce_point`). ``chain`` must hold a callable ``coefficients``
-    (l/a, c/a, alpha') -> (nu_T, nu_v, nu_0)."""
+    (l/a, c/a, alpha') -> (nu_T, nu_v, nu_0). driver: the one estimate allowed to drive alpha'
+    (a chosen root of a non-unique mu, rig.reduction.roots; the iteration starts at
+    settings.mu_start); None: the significant ones in order."""
     if not callable(chain.get("coefficients")):
         raise ParameterError("coefficients", chain.get("coefficients"),
                              "a callable (l_over_a, c_over_a, alpha) -> (nu_T, nu_v, nu_0)")
     drivers, no_driver = significant_drivers(inputs, numerators, settings.significance)
+    if driver is not None:
+        drivers = (driver,) if driver in drivers else ()
     coefficients = chain["coefficients"]
     chain = dict(chain, coefficients=remembered(coefficients))
 

@@ -20,16 +20,18 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 from rig import validate
 from rig.reduction import equations as eq
 from rig.reduction.coefficients import Coefficients, call_model, corrected
+from rig.reduction.drivers import significant_drivers
 from rig.reduction.geometry import StandBGeometry, with_inputs
 from rig.reduction.iteration import ReductionSettings
 from rig.reduction.readings import Measured, reading_inputs, reading_value
 from rig.reduction.result import Evaluation, Guard, ReducedPoint, Start, evaluate_fixed_point, reduce_stand_point
+from rig.reduction.roots import fixed_points
 from rig.reduction.uncertainty import InputQuantity, InputSet
 
 OUTPUTS = (
@@ -93,16 +95,17 @@ def _pivoting_moment(values: Mapping[str, float], g: StandBGeometry) -> float:
                                       g.radius_c)
 
 
-def evaluate(
+def chain_at(
     values: Mapping[str, float],
-    start: Start,
     *,
     readings: StandBReadings,
     geometry: StandBGeometry,
     coefficients: Coefficients,
     settings: ReductionSettings,
-) -> Evaluation:
-    """The chain at one set of input values (names as in :func:`input_set`)."""
+) -> tuple[dict[str, float], float, Callable[[float], tuple[dict[str, float], dict[str, str]]]]:
+    """The chain at one set of input values, before the mu <-> alpha' fixed point: the outputs that
+    do not depend on mu, alpha'/mu [1] (eq. 21), and state_at(mu) -> (the driven outputs at
+    alpha'(mu), reasons for their NaNs)."""
     g = with_inputs(geometry, values)
     out = dict.fromkeys(OUTPUTS, math.nan)
     l = reading_value(values, "l_setting", "m")
@@ -137,6 +140,21 @@ def evaluate(
                                  "(hard case 8)")
         return state, reasons
 
+    return out, alpha_per_mu, state_at
+
+
+def evaluate(
+    values: Mapping[str, float],
+    start: Start,
+    *,
+    readings: StandBReadings,
+    geometry: StandBGeometry,
+    coefficients: Coefficients,
+    settings: ReductionSettings,
+) -> Evaluation:
+    """The chain at one set of input values (names as in :func:`input_set`)."""
+    out, _, state_at = chain_at(values, readings=readings, geometry=geometry, coefficients=coefficients,
+                                settings=settings)
     return evaluate_fixed_point(state_at, start, settings, out, DRIVEN)
 
 
@@ -147,7 +165,15 @@ def reduce(
     settings: ReductionSettings | None = None,
     geometry_u: Mapping[str, float] | None = None,
 ) -> ReducedPoint:
-    """Reduce one stand-B operating point (see rig.reduction.stand_a.reduce for the arguments)."""
+    """Reduce one stand-B operating point (see rig.reduction.stand_a.reduce for the arguments).
+
+    The driving estimate's equation is checked for more than one root in the bracket
+    (:func:`mu_bracket`, rig.reduction.roots). With two or more, the next significant estimate
+    whose own equation has exactly one root drives alpha' instead (mu_T from F_T, mu_M from M_C);
+    failing that, :func:`choose_root` keeps the root the other estimates agree with, or reports
+    the driven outputs as NaN naming the roots. The returned point's ``note`` says which (empty
+    when the root is unique): a non-unique mu is never resolved silently.
+    """
     geometry = StandBGeometry() if geometry is None else geometry
     settings = ReductionSettings() if settings is None else settings
     inputs = input_set(readings, geometry, geometry_u)
@@ -156,5 +182,120 @@ def reduce(
         "mu_T": ("F_T", lambda v: reading_value(v, "F_T", "N")),
         "mu_M": ("M_C", lambda v: _pivoting_moment(v, with_inputs(geometry, v))),
     }
-    return reduce_stand_point(evaluate, inputs, numerators, GUARDS, DRIVEN, settings, readings=readings,
-                              geometry=geometry, coefficients=coefficients)
+    chain = dict(readings=readings, geometry=geometry, coefficients=coefficients)
+    point = reduce_stand_point(evaluate, inputs, numerators, GUARDS, DRIVEN, settings, **chain)
+    drivers = significant_drivers(inputs, numerators, settings.significance)[0]
+    driver = point.driver or next(iter(drivers), "")
+    if not driver:
+        return dataclasses.replace(point, note="")
+    nominal = inputs.mapping(inputs.values)
+
+    def roots_of(name: str) -> tuple[float, ...]:
+        return driver_roots(nominal, name, readings=readings, geometry=geometry, coefficients=coefficients,
+                            settings=settings)
+
+    roots = roots_of(driver)
+    if len(roots) < 2:
+        return dataclasses.replace(point, note="")
+    head = roots_text(driver, roots)
+    for other in (name for name in drivers if name != driver):  # a reading whose equation has one root
+        unique = roots_of(other)
+        if len(unique) != 1:
+            continue
+        alternative = reduce_stand_point(evaluate, inputs, numerators, GUARDS, DRIVEN,
+                                         dataclasses.replace(settings, mu_start=unique[0]), driver=other, **chain)
+        if alternative.driver == other and math.isfinite(alternative.values[other]):
+            return dataclasses.replace(alternative, note=f"{head}; {other} (one root, {unique[0]:.2f}) drives "
+                                       "alpha' instead")
+    at_roots = [reduce_stand_point(evaluate, inputs, numerators, GUARDS, DRIVEN,
+                                   dataclasses.replace(settings, mu_start=root), driver=driver, **chain)
+                for root in roots]
+    return choose_root(driver, roots, at_roots)
+
+
+def roots_text(driver: str, roots: tuple[float, ...]) -> str:
+    """"two roots: mu_v = 0.28 and 0.60" [1]."""
+    names = ", ".join(f"{r:.2f}" for r in roots[:-1]) + f" and {roots[-1]:.2f}"
+    count = {2: "two", 3: "three"}.get(len(roots), str(len(roots)))
+    return f"{count} roots: {driver} = {names}"
+
+
+MU_BRACKET = (0.05, 2.0)  # the range of mu searched for roots: stand B's parameter range of mu [1]
+DISCRIMINATION_Z = 3.0  # an estimate this many u of the difference away from the root rejects it [1]
+
+
+def mu_bracket(readings: StandBReadings, geometry: StandBGeometry, coefficients: Coefficients) -> tuple[float, float]:
+    """[lo, hi] of mu [1] scanned for roots: MU_BRACKET, cut to the law's alpha' domain when the
+    coefficients state one (``coefficients.domain.alpha``, rig.stands.contact_law.LawCoefficients)."""
+    lo, hi = MU_BRACKET
+    domain = getattr(coefficients, "domain", None)
+    if domain is not None:
+        per_mu = eq.alpha_prime_line_contact(1.0, readings.b_over_a, geometry.spin_radius, geometry.radius_x)
+        lo, hi = max(lo, domain.alpha[0] / per_mu), min(hi, domain.alpha[1] / per_mu)
+    return lo, hi
+
+
+def driver_roots(values: Mapping[str, float], driver: str, *, readings: StandBReadings, geometry: StandBGeometry,
+                 coefficients: Coefficients, settings: ReductionSettings) -> tuple[float, ...]:
+    """Every mu [1] in :func:`mu_bracket` with mu = the driver's estimate at alpha'(mu) (eq. 21 with
+    eq. 33 for mu_v, 27 for mu_T, 26 for mu_M), at the input ``values`` (rig.reduction.roots)."""
+    _, _, state_at = chain_at(values, readings=readings, geometry=geometry, coefficients=coefficients,
+                              settings=settings)
+    lo, hi = mu_bracket(readings, geometry, coefficients)
+    if not lo < hi:
+        return ()
+    return fixed_points(lambda mu: state_at(mu)[0][driver], lo, hi)
+
+
+def _difference_z(point: ReducedPoint, driver: str, other: str) -> float:
+    """|mu_other - mu_driver| over the standard uncertainty of the difference [1] (their covariance
+    from the point's first-order propagation); NaN when either is not reported."""
+    prop = point.propagation
+    names = prop.output_names
+    i, j = names.index(driver), names.index(other)
+    a, b = point.values[driver], point.values[other]
+    var = prop.covariance[i, i] + prop.covariance[j, j] - 2.0 * prop.covariance[i, j]
+    if not (math.isfinite(a) and math.isfinite(b) and math.isfinite(var) and var > 0.0):
+        return math.nan
+    return abs(b - a) / math.sqrt(var)
+
+
+def choose_root(driver: str, roots: tuple[float, ...], points: list[ReducedPoint]) -> ReducedPoint:
+    """The reduced point at the one root the other friction estimates agree with, or NaN naming the roots.
+
+    At a root mu_r of the driver's equation, the other estimates (mu_T from F_T, mu_M from M_C)
+    computed with the coefficients at alpha'(mu_r) equal mu_r only if mu_r is the contact's mu
+    (each reading is mu nu(alpha'(mu)) with its own coefficient). A root is rejected when some
+    other estimate differs from it by more than DISCRIMINATION_Z standard uncertainties of the
+    difference; exactly one root not rejected, with every other one rejected, is chosen.
+    Otherwise the driven outputs are NaN with the reason "two roots: mu_v = 0.28 and 0.60 ...".
+    """
+    head = roots_text(driver, roots)
+    verdicts, words = [], []
+    for root, point in zip(roots, points):
+        zs = {other: _difference_z(point, driver, other) for other in MU_ORDER if other != driver}
+        zs = {k: z for k, z in zs.items() if math.isfinite(z)}
+        if not math.isfinite(point.values[driver]):
+            verdicts.append(None)
+            words.append(f"at {root:.2f} the point does not reduce ({point.reasons.get(driver, 'no value')})")
+            continue
+        verdicts.append(bool(zs) and max(zs.values()) > DISCRIMINATION_Z)
+        told = ", ".join(f"{k} z = {z:.1f}" for k, z in zs.items()) or "no other estimate"
+        words.append(f"at {root:.2f}: {told}")
+    evidence = "; ".join(words)
+    kept = [k for k, v in enumerate(verdicts) if v is False]
+    if len(kept) == 1 and all(v is True or v is None for k, v in enumerate(verdicts) if k != kept[0]) and \
+            any(v is True for v in verdicts):
+        chosen = points[kept[0]]
+        return dataclasses.replace(chosen, note=f"{head}; chose {roots[kept[0]]:.2f}, the root the other "
+                                   f"estimates agree with (reject at z > {DISCRIMINATION_Z:g}: {evidence})")
+    base = points[0]
+    values, u, expanded, reasons = (dict(base.values), dict(base.uncertainties), dict(base.expanded),
+                                    dict(base.reasons))
+    why = (f"{head} (the ratio is not monotone in mu, eqs. 33-35 with alpha'(mu), eq. 21); the other estimates "
+           f"do not tell them apart ({evidence})")
+    for name in DRIVEN:
+        values[name] = u[name] = expanded[name] = math.nan
+        reasons[name] = why
+    return dataclasses.replace(base, values=values, uncertainties=u, expanded=expanded, reasons=reasons,
+                               note=head)

@@ -23,6 +23,7 @@ from rig.logbook.truth import read_truth
 from rig.logbook.units import DIMENSIONLESS
 from rig.reduction.table import DAMAGED
 from rig.runner.outputs import REDUCED_CSV
+from rig.runner.summary import with_off_truth
 from rig.stands.base import ContactSpec, Stand
 
 TRUTH_SOURCES = {
@@ -123,7 +124,9 @@ def reduce_to_files(stand: Stand, log_path: Path, contact: ContactSpec, out_dir:
 
 
 def table_to_files(table: pd.DataFrame, log_path: Path, out_dir: Path) -> Reduction:
-    """Write a reduced table of ``log_path`` as ``out_dir/reduced.csv`` and as ``/reduced`` into the log."""
+    """Write a reduced table of ``log_path`` as ``out_dir/reduced.csv`` and as ``/reduced`` into the log,
+    with the twin's off-truth flags (rig.runner.summary.with_off_truth) taken over the whole run."""
+    table = with_off_truth(table)
     damaged = damaged_points(table)
     notes = tuple(table.attrs.get("notes", ()))
     csv = out_dir / REDUCED_CSV

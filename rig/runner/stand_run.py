@@ -36,7 +36,7 @@ from rig.runner.folder_lock import folder_lock
 from rig.runner.outputs import REDUCED_FIGURE, STAND_KIND, SUMMARY_NAME, claim_folder, output_folder, remove_stale, staged_outputs
 from rig.runner.pool import WorkerError
 from rig.runner.reduction import Reduction, gathered_table, read_truth_if_any, reduce_to_files, table_to_files
-from rig.runner.summary import RunFacts, summary_text
+from rig.runner.summary import RunFacts, off_truth_points, summary_text
 from rig.runner.sweep import SETTLE_TRUTH, Failure, ShardedSweep, run_sharded_sweep, run_sweep
 from rig.scenes.stand_scene import StandScene
 from rig.stands.base import Stand
@@ -48,7 +48,8 @@ MAX_JOBS = 256
 @dataclass(frozen=True)
 class RunReport:
     """What a run wrote: the folder, the files (names), points planned / in the log / resumed,
-    the failures, whether it stopped early, the summary text and the damaged points of the log."""
+    the failures, whether it stopped early, the summary text, the damaged points of the log and the
+    reduced points off their truth (rig.runner.summary.with_off_truth; twin runs)."""
 
     out_dir: Path
     files: tuple[str, ...]
@@ -59,6 +60,7 @@ class RunReport:
     stopped: bool
     summary: str
     damaged: tuple[int, ...] = ()
+    off_truth: tuple[int, ...] = ()
 
 
 def _settle_times(log_path: Path) -> list[float]:
@@ -128,7 +130,8 @@ def _run_locked(scene: StandScene, out_dir: Path, jobs: int, scheduler: str | No
     with staged_outputs(out_dir) as staging:
         files, text, reduction = _write_outputs(scene, stand, log_path, facts, staging, table)
     return RunReport(out_dir, tuple(files), len(plan), facts.resumed + facts.written_now, facts.resumed,
-                     tuple(sweep.failures), sweep.stopped, text, () if reduction is None else reduction.damaged)
+                     tuple(sweep.failures), sweep.stopped, text, () if reduction is None else reduction.damaged,
+                     () if reduction is None else off_truth_points(reduction.table))
 
 
 def _discard(writer: LogWriter, log_path: Path) -> None:

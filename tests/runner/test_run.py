@@ -41,7 +41,8 @@ def test_outputs_reduced_table_and_summary(tmp_path):
     table = pd.read_csv(tmp_path / "reduced.csv", index_col="point")
     assert list(table.columns[:8]) == ["l_over_a", "u_l_over_a", "c_over_a", "u_c_over_a", "mu_v", "u_mu_v",
                                        "mu_T", "u_mu_T"]
-    assert list(table.columns[8:]) == ["true_l_over_a", "true_c_over_a", "true_mu_v", "true_mu_T"]
+    assert list(table.columns[8:]) == ["true_l_over_a", "true_c_over_a", "true_mu_v", "true_mu_T", "z_max", "off_truth"]
+    assert (table["off_truth"] == 0).all() and "off truth (z > " in report.summary and "0 point(s)" in report.summary
     assert (table["true_mu_T"] == 0.3).all()
     assert np.all(np.abs(table["mu_T"] - 0.3) < 5 * table["u_mu_T"])  # u = 0.2 N / sqrt(100) / load
     assert table["u_mu_T"].to_numpy() == pytest.approx(0.02 / np.array([5, 10, 20, 25]), rel=0.35)

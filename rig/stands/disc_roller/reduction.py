@@ -109,8 +109,24 @@ def reduce_log(
     frame = reduced_table(points)
     frame.index = pd.Index(reduced, name="point")
     frame = with_damaged(frame, indices, damaged)
+    if "note" in frame:
+        frame["note"] = frame["note"].fillna("").astype(str)
+        frame.attrs["notes"] = root_notes(frame)
     frame.attrs["units"] = {name: _unit(name) for name in frame.columns}
     return frame
+
+
+def root_notes(frame: pd.DataFrame) -> list[str]:
+    """The summary's line on points whose mu is not unique (rig.reduction.stand_b): how many, how many
+    resolved by another reading, how many NaN with the roots named; [] when every root was unique."""
+    noted = frame.index[frame["note"].str.contains("roots:", regex=False).to_numpy()]
+    if not len(noted):
+        return []
+    unresolved = [int(i) for i in noted if not np.isfinite(frame.loc[i, "mu_v"])]
+    shown = ", ".join(map(str, unresolved[:20])) + (" ..." if len(unresolved) > 20 else "")
+    return [f"{len(noted)} point(s) where the driving estimate's equation has more than one root in mu "
+            f"(reduced.csv's note names them): {len(noted) - len(unresolved)} resolved by another reading, "
+            f"{len(unresolved)} reduced to NaN" + (f" (points {shown})" if unresolved else "")]
 
 
 def _unit(column: str) -> str:

@@ -1,0 +1,157 @@
+"""Stand B's reduction and a non-unique mu: with plastic slip (Psi = 2.5, eq. 25) F_V/F_N = mu nu_v(alpha'(mu))
+rises and falls again in mu, so eq. (33) with alpha'(mu) (eq. 21) has two roots. The expected roots come
+from a dense scan of the contact law itself (rig.contact.solve), independent of the reduction's scan."""
+
+from __future__ import annotations
+
+import functools
+import math
+import re
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from rig.contact.solve import solve
+from rig.reduction import stand_b
+from rig.reduction.geometry import StandBGeometry
+from rig.reduction.iteration import ReductionSettings
+from rig.reduction.result import reduce_stand_point
+from rig.reduction.roots import fixed_points
+from tests.reduction.synthetic import stand_b_readings
+
+B = StandBGeometry()
+LOAD = 60.0  # [N]
+B_OVER_A = B.b_over_a(LOAD)
+K = 10.0 * B_OVER_A * B.spin_radius / B.radius_x  # alpha'/mu, eq. (21)
+MU = 0.6
+
+
+@functools.lru_cache(maxsize=None)
+def law(l_over_a: float, c_over_a: float, alpha: float) -> tuple[float, float, float]:
+    """The kinematic model with plastic slip Psi = 2.5 (line contact, n = 8: small and fast)."""
+    r = solve("kinematic", shape="line", b_over_a=B_OVER_A, alpha=alpha, c_over_a=c_over_a, l_over_a=l_over_a,
+              poisson=0.5, n=8, psi=2.5)
+    return r.nu_T, r.nu_v, r.nu_0
+
+
+def dense_roots(level: float, l_over_a: float) -> list[float]:
+    """mu where mu nu_v(K mu) = level, by sign changes on 120 log-spaced mu in [0.05, 2] (linear between)."""
+    mus = np.geomspace(0.05, 2.0, 120)
+    excess = np.array([m * law(l_over_a, 0.0, float(m * K))[1] for m in mus]) - level
+    found = []
+    for k in np.flatnonzero(np.sign(excess[:-1]) != np.sign(excess[1:])):
+        t = excess[k] / (excess[k] - excess[k + 1])
+        found.append(float(mus[k] + t * (mus[k + 1] - mus[k])))
+    return found
+
+
+def roots_in(text: str) -> list[float]:
+    match = re.search(r"two roots: mu_v = ([0-9.]+) and ([0-9.]+)", text)
+    assert match, text
+    return [float(match.group(1)), float(match.group(2))]
+
+
+def readings_at_centre(u_t_mo: float):
+    """l = 0, c = 0 at 60 N: F_T = 0, F_V and M_C from the law at mu = 0.6 (twist known to 1e-5 rad)."""
+    return stand_b_readings(MU, LOAD, 0.0, 0.0, law, b_over_a=B_OVER_A, u=(1e-5, 1e-5, 0.05, 0.03, 0.03, u_t_mo))[0]
+
+
+def test_two_roots_without_a_discriminating_reading_are_nan_with_both_named():
+    readings = readings_at_centre(u_t_mo=0.5)  # M_C = 0.04 N m buried in 0.5 N m: mu_M cannot drive or decide
+    expected = dense_roots(readings.lateral_force.value / LOAD, 0.0)
+    assert len(expected) == 2 and expected[1] == pytest.approx(MU, abs=0.01)  # the law's own two roots
+    assert expected[0] < 0.45  # the other one far from the truth
+    point = stand_b.reduce(readings, law)
+    assert math.isnan(point.values["mu_v"]) and math.isnan(point.values["alpha_prime"])
+    named = roots_in(point.reasons["mu_v"])
+    assert named == pytest.approx(expected, abs=0.01)
+    assert point.note.startswith("two roots: mu_v = ")
+    assert point.row()["note"] == point.note
+
+
+def test_two_roots_resolved_by_the_peripheral_force_say_so():
+    # l = 3.2 mm: F_V/F_N has two roots, but F_T is significant and mu_T's equation (27) has one
+    readings, _ = stand_b_readings(MU, LOAD, 0.0032, 0.0, law, b_over_a=B_OVER_A,
+                                   u=(1e-5, 1e-5, 0.05, 0.03, 0.03, 0.02))
+    expected = dense_roots(readings.lateral_force.value / LOAD, 0.0032 / B.a)
+    assert len(expected) == 2 and min(abs(r - MU) for r in expected) < 0.01
+    point = stand_b.reduce(readings, law)
+    assert roots_in(point.note) == pytest.approx(expected, abs=0.01)
+    assert point.driver == "mu_T" and "mu_T (one root" in point.note
+    for name in ("mu_v", "mu_T"):
+        assert point.values[name] == pytest.approx(MU, rel=1e-6), name
+        assert 0.0 < point.uncertainties[name] < 0.05, name
+
+
+def test_one_root_is_reduced_as_before():
+    readings, _ = stand_b_readings(MU, LOAD, 0.020, math.asin(4.0 / 70.2), law, b_over_a=B_OVER_A)
+    mus = np.geomspace(0.05, 2.0, 120)
+    ratio = [m * law(5.0, 1.0, float(m * K))[1] for m in mus]  # c = 4 mm: c/a = 1
+    assert np.all(np.diff(ratio) > 0)  # monotone: one root
+    point = stand_b.reduce(readings, law)
+    plain = reduce_stand_point(stand_b.evaluate, stand_b.input_set(readings, B), {
+        "mu_v": ("F_V", lambda v: v["F_V_N"]), "mu_T": ("F_T", lambda v: v["F_T_N"]),
+        "mu_M": ("M_C", lambda v: v["T_Mo_N_m"] + B.radius_c * v["F_T_N"])}, stand_b.GUARDS, stand_b.DRIVEN,
+        ReductionSettings(), readings=readings, geometry=B, coefficients=law)
+    assert point.note == ""
+    assert point.values["mu_v"] == pytest.approx(MU, rel=1e-7)
+    for name, value in plain.values.items():
+        assert point.values[name] == value or (math.isnan(value) and math.isnan(point.values[name])), name
+        assert point.uncertainties[name] == plain.uncertainties[name] or math.isnan(value), name
+
+
+# ------------------------------------------------------------------ the scan itself, on hostile maps
+
+def map_with_roots(roots: list[float], scale: float):
+    """g(mu) = mu exp(scale prod(ln mu - ln r)): its fixed points are exactly ``roots``."""
+    logs = [math.log(r) for r in roots]
+    return lambda mu: mu * math.exp(scale * math.prod(math.log(mu) - y for y in logs))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.floats(0.07, 1.8), min_size=0, max_size=3), st.floats(-3.0, 3.0).filter(lambda s: abs(s) > 0.05))
+def test_scan_returns_every_well_separated_root_and_only_roots(roots, scale):
+    logs = sorted(math.log(r) for r in roots)
+    step = math.log(2.0 / 0.05) / 47
+    if any(b - a < 2.5 * step for a, b in zip(logs, logs[1:])):
+        return  # closer than the scan resolves (documented limit)
+    g = map_with_roots([math.exp(y) for y in logs], scale)
+    found = fixed_points(g, 0.05, 2.0)
+    for mu in found:  # every answer satisfies the equation
+        assert abs(math.log(g(mu)) - math.log(mu)) < 1e-8
+    assert [math.log(m) for m in found] == pytest.approx(logs, abs=1e-7)  # and none is missed
+    if len(found) == 1:  # a single answer is unique in the bracket (dense check)
+        y = np.linspace(math.log(0.05), math.log(2.0), 4001)
+        h = np.array([math.log(g(math.exp(t))) - t for t in y])
+        assert int(np.sum(np.sign(h[:-1]) != np.sign(h[1:]))) == 1
+
+
+def bump_law(l_over_a: float, c_over_a: float, alpha: float) -> tuple[float, float, float]:
+    """A smooth law whose mu nu_v(K mu) peaks at alpha' = 20 and falls to 0.3 of its peak slope."""
+    x = alpha / 20.0
+    return 0.9 * math.tanh(l_over_a), 0.05 + 0.5 / (1.0 + x * x), 0.3 + 0.1 * math.log1p(alpha)
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.floats(0.1, 1.5), st.floats(-3.0, 3.0))
+def test_a_reported_mu_solves_eq_33_and_is_the_only_root_or_is_noted(mu, l_over_a):
+    """mu_v reported: it solves eq. (33) at alpha'(mu_v); driven by mu_v without a note, it is the only root
+    in the bracket (a dense scan); otherwise the note names the roots."""
+    readings, _ = stand_b_readings(mu, LOAD, l_over_a * B.a, 0.2, bump_law, b_over_a=B_OVER_A)
+    point = stand_b.reduce(readings, bump_law)
+    reported = point.values["mu_v"]
+    if not math.isfinite(reported):
+        return
+    f_v, f_n = readings.lateral_force.value, readings.normal_force.value
+    c = B.pivot_distance * math.sin(0.2) / B.a
+    alpha = reported * 10.0 * B_OVER_A * B.spin_radius / B.radius_x
+    assert f_v / (f_n * bump_law(l_over_a, c, alpha)[1]) == pytest.approx(reported, rel=1e-7)  # eq. (33)
+    mus = np.geomspace(0.05, 2.0, 3001)
+    excess = np.array([m * bump_law(l_over_a, c, m * alpha / reported)[1] for m in mus]) - f_v / f_n
+    count = int(np.sum(np.sign(excess[:-1]) != np.sign(excess[1:])))
+    if point.note == "" and point.driver == "mu_v":
+        assert count == 1  # unique in the bracket
+    elif point.note:
+        assert count >= 2 and "roots" in point.note
