@@ -65,16 +65,17 @@ def _state(args):
 
 
 def sweep(grids, jobs: int):
-    """{(b, alpha, c, l): {n: (nu_v, nu_0)}} over the whole sweep."""
+    """{(b, alpha, c, l): {n: (nu_v, nu_0)}} over the whole sweep (the widest contacts first: they take longest)."""
     states = list(itertools.product(SHAPES, ALPHAS, POINTS))
-    keys = [(b, a, c, l) for b, a, (c, l) in states]
+    keys = sorted(((b, a, c, l) for b, a, (c, l) in states), key=lambda k: (-k[0], -k[1]))
     work = [(k, tuple(grids)) for k in keys]
     if jobs > 1:
         with ProcessPoolExecutor(max_workers=jobs) as pool:
             solved = list(pool.map(_state, work))
     else:
         solved = [_state(w) for w in work]
-    return dict(zip(keys, solved))
+    found = dict(zip(keys, solved))
+    return {(b, a, c, l): found[(b, a, c, l)] for b, a, (c, l) in states}
 
 
 def contact_limits() -> list[tuple[float, np.ndarray, np.ndarray]]:
