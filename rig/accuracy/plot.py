@@ -14,6 +14,7 @@ sits at a floor, half the smallest non-zero error of the panel, and the legend s
 from __future__ import annotations
 
 import math
+import textwrap
 from pathlib import Path
 
 import numpy as np
@@ -124,7 +125,7 @@ def _panel(ax, rows: pd.DataFrame, kind: str, title: str) -> None:
         for k, (dx, dy) in zip(numbers, label_offsets(points)):
             ax.annotate(str(k + 1), (cost[k], shown[k]), fontsize=6, xytext=(dx, dy), textcoords="offset points")
     key = "; ".join(f"{k + 1} {label}" for k, label in enumerate(rows["setting"]))
-    ax.text(0.0, -0.2, key, transform=ax.transAxes, fontsize=5, va="top", wrap=True)
+    ax.text(0.0, -0.16, "\n".join(textwrap.wrap(key, 95)), transform=ax.transAxes, fontsize=6, va="top")
 
 
 def pareto_figure(design: StudyDesign, table: pd.DataFrame, path: Path, title: str) -> Path:
@@ -134,7 +135,7 @@ def pareto_figure(design: StudyDesign, table: pd.DataFrame, path: Path, title: s
     count = len(design.axes)
     columns = 2 if count > 1 else 1
     rows_n = (count + columns - 1) // columns
-    fig = new_figure(figsize=(6.5 * columns, 5.6 * rows_n))
+    fig = new_figure(figsize=(6.5 * columns, 6.0 * rows_n))
     axes = fig.subplots(rows_n, columns, squeeze=False)
     for ax, plan in zip(axes.flat, design.axes):
         rows = table[table["axis"] == plan.axis.value]
