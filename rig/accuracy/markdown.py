@@ -74,21 +74,31 @@ def reference_lines(plan, rows: pd.DataFrame, table: pd.DataFrame) -> list[str]:
             "(Richardson with the observed order; where the order is not between 0.5 and 3 the finest value with "
             "three times its last step as uncertainty: rig.contact.numerical_error.richardson). Its own "
             f"uncertainty (RMS over the points): {'; '.join(parts)}. The finest setting, {finest.setting}, is "
-            f"{number(finest.error)} from it (largest RMS d).", ""]
+            f"{number(finest.error)} from it (largest RMS d); errors below the reference's own uncertainty are not "
+            "resolved.", ""]
 
 
 def choice_sentence(rows: pd.DataFrame, axis: str) -> str:
-    """One sentence: which setting on the axis's front to choose for which error."""
+    """One sentence: which setting on the axis's front to choose for which error. The front is walked
+    from the cheapest setting; it stops at the first whose error is below the reference's own
+    uncertainty (u_reference), since the study cannot tell the rest apart."""
     front = rows[rows["on_front"]].sort_values("cost_s")
     if front.empty:
         return f"{axis}: no setting gives every reduced quantity."
-    cost = "build + first run" if axis in (Axis.CONTACT.value, Axis.TABLE.value) else "cost"
-    if axis == Axis.GATE.value:
-        cost = "lab time"
-    steps = [f"{row.setting} for an error down to {number(row.error)} ({cost} {number(row.cost_s, 1)} s)"
-             for row in front.itertuples()]
-    return f"{axis}: choose " + ("; ".join(steps[:-1]) + "; else " if len(steps) > 1 else "") + steps[-1] + "."
-
+    cost = "lab time" if axis == Axis.GATE.value else (
+        "build + first run" if axis in (Axis.CONTACT.value, Axis.TABLE.value) else "per run")
+    u_reference = float(rows["u_reference"].max()) if "u_reference" in rows else 0.0
+    steps, unresolved = [], False
+    for row in front.itertuples():
+        steps.append(f"{row.setting} for an error down to {number(row.error)} ({cost} {number(row.cost_s, 1)} s)")
+        if u_reference > 0.0 and row.error <= u_reference:
+            unresolved = True
+            break
+    text = f"{axis}: choose " + ("; ".join(steps[:-1]) + "; else " if len(steps) > 1 else "") + steps[-1]
+    if unresolved:
+        text += (f" - below the reference's own uncertainty ({number(u_reference)}) the settings cannot be told "
+                 "apart, so a costlier one buys nothing measurable")
+    return text + "."
 
 
 def gate_axis_table(rows: pd.DataFrame) -> list[str]:
