@@ -3,7 +3,10 @@
 Four axes, each varied on its own with everything else at the scene's setting (docs/accuracy.md):
 
 * CONTACT - contact model (rigid, fastsim, kinematic, and the scene's own) x grid n (cells
-  across 2a). Reference: the last model of MODEL_LADDER present, at the largest n.
+  across 2a). Reference: the last model of MODEL_LADDER present, extrapolated to zero cell size
+  from its grids N/4, N/2, N (N its largest n; the two coarser are added when missing:
+  rig.accuracy.table, Richardson with the observed order); where N/4 would be below the smallest
+  grid (4), that model at N itself.
 * TABLE - surrogate-table resolution: the scene's node counts scaled along every axis (the
   factor 1 is the scene's own). Reference: the largest factor. Only for a scene with a table.
 * DRIVE - quasi-static drive (without the effects the stand refuses without dynamics, e.g.
@@ -86,12 +89,19 @@ class Entry:
 
 @dataclass(frozen=True)
 class AxisPlan:
-    """The entries of one axis, which one is the reference (None: GATE) and which the scene's own."""
+    """The entries of one axis, which one is the reference (None: GATE) and which the scene's own.
+
+    extrapolated: indices of three entries on grids N/4, N/2, N whose reduced outputs are
+    extrapolated to zero cell size to give the axis's reference (CONTACT axis; None elsewhere, or
+    when the finest model has no such grids); ``reference`` is then the finest of them, kept as a
+    setting like any other.
+    """
 
     axis: Axis
     entries: tuple[Entry, ...]
     reference: int | None
     scene_choice: int
+    extrapolated: tuple[int, int, int] | None = None
 
 
 @dataclass(frozen=True)
@@ -153,19 +163,33 @@ def _contact_variant(scene: ContactSpec, model: str, n: int) -> ContactSpec:
     return scene if same else dataclasses.replace(scene, model=model, n=n, effects=effects)
 
 
+def reference_grids(finest: int) -> tuple[int, int, int] | None:
+    """(N/4, N/2, N) for the finest grid N, or None when N is not a multiple of 4 or N/4 is below
+    the smallest grid N_RANGE[0]."""
+    if finest % 4 or finest // 4 < N_RANGE[0]:
+        return None
+    return finest // 4, finest // 2, finest
+
+
 def _contact_axis(scene: Setting, options: StudyOptions) -> AxisPlan:
     own = scene.contact
     models = sorted(set(options.models) | {own.model}, key=MODEL_LADDER.index)
     grids = sorted(set(options.grids) | {_grid(own)})
+    triple = reference_grids(grids[-1]) if models[-1] != "linear" else None
     entries = []
     for model in models:
-        for n in grids:
+        for n in sorted(set(grids) | (set(triple) if triple and model == models[-1] else set())):
             contact = _contact_variant(own, model, n)
             dropped = sorted(set(own.effects) - set(contact.effects))
             label = f"{model} n={n}" + (f" (without {', '.join(dropped)})" if dropped else "")
             entries.append(Entry(label, dataclasses.replace(scene, contact=contact)))
     choice = next(i for i, e in enumerate(entries) if e.setting.contact is own)
-    return AxisPlan(Axis.CONTACT, tuple(entries), len(entries) - 1, choice)
+    extrapolated = None
+    if triple:
+        finest = [i for i, e in enumerate(entries) if e.setting.contact.model == models[-1]]
+        by_n = {_grid(entries[i].setting.contact): i for i in finest}
+        extrapolated = tuple(by_n[n] for n in triple)
+    return AxisPlan(Axis.CONTACT, tuple(entries), len(entries) - 1, choice, extrapolated)
 
 
 def _table_axis(scene: Setting, options: StudyOptions) -> AxisPlan | None:

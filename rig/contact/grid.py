@@ -24,6 +24,11 @@ _SUBSAMPLES = 8  # sub-cells per cell edge used to average the pressure over a c
 _RIM_SUBSAMPLES = 32  # the same for the cells the contact's rim cuts
 # b/a below which a narrow contact gets more rows than n (up to 2n at half of it): :func:`rows_across`
 NARROW_B_OVER_A = 0.15
+# b/a above which a wide contact gets more rows than n (up to WIDE_ROWS n at 1.5 times it): :func:`rows_across`
+WIDE_B_OVER_A = 20.0 / 3.0
+WIDE_ROWS = 1.5
+# largest cell aspect ratio hx/hy of a wide contact's grid: :func:`cells_along_rolling`
+MAX_ASPECT = 2.5
 _INSIDE = 1e-6  # p/p0 above which a cell's corner is inside (a corner on the rim, up to rounding, is not)
 
 
@@ -63,19 +68,36 @@ def rows_across(n: int, b_over_a: float) -> int:
     columns and 0.0009 with 48 x 32; the rows, not the columns, carry that error (refining y alone at nx = 32:
     nu_v 0.02045 / 0.02404 / 0.02560 / 0.02616 at 16 / 32 / 64 / 128 rows; x alone 0.02522 / 0.02404
     / 0.02380 / 0.02375). docs/contact-model.md, "Grid".
+
+    A wide contact, b/a > WIDE_B_OVER_A, gets n (b/a)/WIDE_B_OVER_A rows, at most WIDE_ROWS n (b/a = 10:
+    1.5 n). Near full stick the lateral traction is singular along the long sides (|y| -> a), and the
+    spin moment nu_0, carried by that traction times x up to b, converges slowly in the rows: at b/a =
+    10, alpha' = 325, pure spin, with cells of aspect 2.5, nu_0 = 0.36211 / 0.36327 / 0.36410 / 0.36492
+    with 32 / 48 (4 n columns) / 48 / 64 rows (6 n and 8 n columns) at n = 32, against a converged value
+    near 0.367 (docs/accuracy-contact-sweep.md).
     """
-    return int(round(n * min(2.0, max(1.0, NARROW_B_OVER_A / b_over_a))))
+    narrow = min(2.0, max(1.0, NARROW_B_OVER_A / b_over_a))
+    wide = min(WIDE_ROWS, max(1.0, b_over_a / WIDE_B_OVER_A))
+    return int(round(n * max(narrow, wide)))
 
 
 def cells_along_rolling(n: int, b_over_a: float) -> int:
     """Cells across 2b (columns, along x) for the grid of nominal size n: n to 2n, square cells for
-    1 <= b/a <= 2.
+    1 <= b/a <= 2, and for a wide contact at least enough that a cell is at most MAX_ASPECT times as
+    long as it is high (b/a = 10: 6 n columns with 1.5 n rows).
 
     The upwind scheme's error scales with the cell size relative to the contact's extent in the
-    rolling direction, so 2b never gets fewer cells than 2a; beyond b/a = 2 the cells stretch
-    along x instead of multiplying.
+    rolling direction, so 2b never gets fewer cells than 2a; from b/a = 2 the cells stretch along x
+    instead of multiplying, up to the aspect ratio MAX_ASPECT. Longer cells cost accuracy where the
+    field turns within a distance ~a along x: round the spin pole in full sliding and at the
+    lateral edges near full stick. At b/a = 10 with 2 n columns (aspect 5) nu_v at alpha' = 0.1, C =
+    (0.5, 0.5) a moved by 0.003 between n = 16, 24, 32, 64 (0.07895 / 0.07362 / 0.07683 / 0.07537,
+    converged 0.07575); with 4 n columns (aspect 2.5 with n rows) 0.07541 at n = 32, and nu_0 at
+    alpha' = 325, pure spin, 0.36211 against 0.36002 (docs/accuracy-contact-sweep.md).
     """
-    return int(round(n * min(max(b_over_a, 1.0), 2.0)))
+    along = n * min(max(b_over_a, 1.0), 2.0)
+    limited = b_over_a * rows_across(n, b_over_a) / MAX_ASPECT
+    return int(round(max(along, limited)))
 
 
 @dataclass(frozen=True, eq=False)

@@ -7,7 +7,7 @@
 
 alpha is alpha' of eq. (21) (0 = rigid sliding, inf = no slip); (c/a, l/a) is the rolling point;
 poisson is the (combined) Poisson ratio of the pair; n = cells across 2a for the grid models (more
-rows for a narrow contact, b/a < 0.15: rig.contact.grid.rows_across).
+rows for a narrow contact, b/a < 0.15, and a wide one, b/a > 6.67: rig.contact.grid.rows_across).
 ``solve_creepage`` states the same problem in creepages, which also covers zero spin (hard case 1).
 Effects are keyword arguments (see rig.contact.effects); an effect not named is not built.
 """
@@ -42,7 +42,9 @@ DEFAULT_N = 32
 # 7: each row's first cell carries its traction with the leading edge's sqrt profile, the second its own step (rig.contact.entry).
 # 8: every cell the contact reaches shares out its load (a sliver thinner than a sub-cell no longer lost it), sub-cells exact across x.
 # 9: a narrow contact (b/a < 0.15) gets more rows than n, up to 2n (rig.contact.grid.rows_across).
-DISCRETISATION_REVISION = 9
+# 10: a wide contact (b/a > 6.67) gets more rows, up to 1.5n, and cells at most 2.5 times as long as high
+#     (rig.contact.grid.rows_across, cells_along_rolling).
+DISCRETISATION_REVISION = 10
 N_RANGE = (4, 512)
 # Effects each model can represent; the others would be silently meaningless, so they are errors.
 # The pressure-dependent mu changes only the traction bound, so every model with one has it; linear

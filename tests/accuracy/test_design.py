@@ -38,8 +38,10 @@ def test_axes_references_and_scene_choice(scene):
     plans = {plan.axis: plan for plan in design.axes}
     assert list(plans) == [Axis.CONTACT, Axis.TABLE, Axis.DRIVE, Axis.GATE]
     contact = plans[Axis.CONTACT]
-    assert len(contact.entries) == 3 * 4
+    assert len(contact.entries) == 3 * 4 + 1  # kinematic n = 6 added: the reference extrapolates 6 / 12 / 24
     assert contact.entries[contact.reference].label == "kinematic n=24"
+    assert [contact.entries[i].label for i in contact.extrapolated] == ["kinematic n=6", "kinematic n=12",
+                                                                        "kinematic n=24"]
     assert contact.entries[contact.scene_choice].setting == design.scene_setting
     table = plans[Axis.TABLE]
     assert [e.setting.contact.table_points for e in table.entries] == [(13, 2, 4), (19, 3, 6), (25, 3, 7),
@@ -52,7 +54,7 @@ def test_axes_references_and_scene_choice(scene):
     assert [e.setting.gate_time_s for e in gate.entries] == [1.0, 2.0, 4.0, 8.0] and gate.reference is None
     # the scene's own setting appears on every axis but runs once
     keys = [s.key() for s in design.settings()]
-    assert len(keys) == len(set(keys)) == 12 + 3 + 4 + 3
+    assert len(keys) == len(set(keys)) == 13 + 3 + 4 + 3
 
 
 def test_scene_grid_and_model_are_added_and_unsupported_effects_dropped(scene):
@@ -60,7 +62,9 @@ def test_scene_grid_and_model_are_added_and_unsupported_effects_dropped(scene):
     design = study_design(dataclasses.replace(scene, contact=own), StudyOptions(models=("fastsim",), grids=(8,)))
     contact = next(p for p in design.axes if p.axis is Axis.CONTACT)
     labels = [e.label for e in contact.entries]
-    assert labels == ["fastsim n=8 (without psi)", "fastsim n=20 (without psi)", "kinematic n=8", "kinematic n=20"]
+    # kinematic n = 5 and 10 added for the reference's extrapolation (5 / 10 / 20)
+    assert labels == ["fastsim n=8 (without psi)", "fastsim n=20 (without psi)", "kinematic n=5", "kinematic n=8",
+                      "kinematic n=10", "kinematic n=20"]
     assert contact.entries[contact.scene_choice].setting.contact is own
 
 

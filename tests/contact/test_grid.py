@@ -33,8 +33,18 @@ def test_the_loads_are_as_symmetric_as_the_contact(b, n):
 
 
 def test_narrow_contacts_get_more_rows_up_to_twice_n():
-    """rows_across: n for b/a >= 0.15, n 0.15/(b/a) below, at most 2n; columns are unaffected."""
-    assert [rows_across(32, b) for b in (10.0, 1.0, 0.15, 0.12, 0.1, 0.075, 0.01)] == [32, 32, 32, 40, 48, 64, 64]
+    """rows_across: n for 0.15 <= b/a <= 20/3, n 0.15/(b/a) below, at most 2n; columns are unaffected."""
+    assert [rows_across(32, b) for b in (6.0, 1.0, 0.15, 0.12, 0.1, 0.075, 0.01)] == [32, 32, 32, 40, 48, 64, 64]
     grid = make_grid("ellipse", 0.1, 32)
     assert (grid.n, grid.nx, grid.ny) == (32, 32, 48)
     assert np.isclose(grid.hy, 2.0 / 48) and np.isclose(grid.y[-1], -grid.y[0])
+
+
+def test_wide_contacts_get_more_rows_and_cells_at_most_two_and_a_half_times_as_long_as_high():
+    """rows_across: n (b/a)/(20/3) above b/a = 20/3, at most 1.5 n; cells_along_rolling: 2n from b/a = 2
+    until a cell would be longer than 2.5 times its height ((2b/nx)/(2a/ny) <= 2.5)."""
+    assert [rows_across(32, b) for b in (5.0, 8.0, 10.0, 20.0)] == [32, 38, 48, 48]
+    for b in (2.0, 3.0, 5.0, 8.0, 10.0):
+        grid = make_grid("ellipse", b, 32)
+        assert grid.hx / grid.hy <= 2.5 + 1e-9, (b, grid.nx, grid.ny)
+    assert (make_grid("ellipse", 3.0, 32).nx, make_grid("ellipse", 10.0, 32).nx) == (64, 192)
