@@ -293,3 +293,11 @@ def test_a_flipped_byte_in_the_truth_is_named_not_dropped(flip_setup, tmp_path):
         info = f["truth/mu"].id.get_chunk_info(0)
     status, err, _ = _reduce_flipped(good_log, [(info.byte_offset + info.size // 2, 0x5A)], folder)
     assert status == 2 and len(err) == 1 and "/truth/mu: unreadable" in err[0], err
+
+
+def test_a_flipped_byte_in_the_scene_text_is_named(flip_setup):
+    """The scene text (HDF5's global heap, no checksum of its own) is checked against scene_sha256."""
+    good_log, _, folder = flip_setup
+    offset = good_log.read_bytes().index(b"mu = 0.4") + len("mu = 0.")
+    status, err, _ = _reduce_flipped(good_log, [(offset, ord("4") ^ ord("5"))], folder)  # mu = 0.5
+    assert status == 2 and len(err) == 1 and "does not match its checksum" in err[0], err
