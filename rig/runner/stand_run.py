@@ -28,7 +28,8 @@ from rig.logbook import LogWriter, RunMetadata, point_indices, read_point, utc_t
 from rig.runner.dask_pool import check_scheduler
 from rig.runner.figures import reduced_vs_truth_figure
 from rig.runner.folder_lock import folder_lock
-from rig.runner.outputs import REDUCED_FIGURE, STAND_KIND, SUMMARY_NAME, claim_folder, output_folder, remove_stale, staged_outputs
+from rig.runner.outputs import (REDUCED_FIGURE, STAND_KIND, SUMMARY_NAME, claim_folder, output_folder, remove_stale,
+                                staged_outputs)
 from rig.runner.pool import WorkerError
 from rig.runner.reduction import Reduction, read_truth_if_any, reduce_to_files
 from rig.runner.summary import RunFacts, summary_text
