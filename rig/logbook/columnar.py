@@ -211,7 +211,8 @@ class ColumnarLog:
                                     f"found shape {ds.shape} dtype {ds.dtype}")
         return read_dataset(ds)
 
-    def _quantity_rows(self, group: h5py.Group, name: str, faults: dict[int, str] | None = None) -> tuple[np.ndarray, str]:
+    def _quantity_rows(self, group: h5py.Group, name: str,
+                       faults: dict[int, str] | None = None) -> tuple[np.ndarray, str]:
         """Rows and unit of a quantity; a non-finite row raises, or with ``faults`` ({row: what is
         wrong}) is recorded there as that point's fault."""
         values = self._rows(group, name, "iuf").astype(np.float64, copy=False)
@@ -239,7 +240,8 @@ class ColumnarLog:
         records = h5format.subgroup(self.points, L.CALIBRATION_GROUP)
         return [rec for rec in records if len(h5format.subgroup(records, rec)) == 0]
 
-    def counters(self, faults: dict[int, str] | None = None) -> tuple[np.ndarray, dict[str, tuple[np.ndarray, np.ndarray]]] | None:
+    def counters(self, faults: dict[int, str] | None = None
+                 ) -> tuple[np.ndarray, dict[str, tuple[np.ndarray, np.ndarray]]] | None:
         """(gate time rows [s], {name: (count rows, marks rows)}), or None without counters."""
         if L.COUNTERS_GROUP not in self.points:
             return None
@@ -358,7 +360,8 @@ class ColumnarLog:
             if length[row] == 0:
                 continue
             try:
-                out[first[row] - lo:first[row] + length[row] - lo] = read_dataset(ds, slice(first[row], first[row] + length[row]))
+                span = slice(int(first[row]), int(first[row] + length[row]))
+                out[span.start - lo:span.stop - lo] = read_dataset(ds, span)
             except LogFormatError as error:
                 faults.setdefault(row, f"{error}: point {int(self.index[row])}: samples {int(first[row])} .. "
                                        f"{int(first[row] + length[row]) - 1} cannot be read")

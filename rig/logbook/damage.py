@@ -28,7 +28,8 @@ def _scalars(record: PointRecord):
         for name, q in fields.items():
             yield f"/{L.POINTS_GROUP}/{L.CALIBRATION_GROUP}/{rec}/{name}", name, q.value
     if record.counters is not None:
-        yield f"/{L.POINTS_GROUP}/{L.COUNTERS_GROUP}/{L.GATE_TIME_DATASET}", L.GATE_TIME_DATASET, record.counters.gate_time_s
+        gate = f"/{L.POINTS_GROUP}/{L.COUNTERS_GROUP}/{L.GATE_TIME_DATASET}"
+        yield gate, L.GATE_TIME_DATASET, record.counters.gate_time_s
 
 
 def _same(a: object, b: object) -> bool:

@@ -9,6 +9,7 @@ object's path inside it (which names the point) and what is wrong.
 
 from __future__ import annotations
 
+import hashlib
 from collections.abc import Callable
 from typing import TypeVar
 
@@ -103,17 +104,27 @@ def write_metadata(handle: h5py.File, meta: RunMetadata) -> None:
     handle.attrs[L.ATTR_SEED] = np.int64(meta.seed)
     handle.attrs[L.ATTR_STAND] = meta.stand
     handle.attrs[L.ATTR_CREATED_UTC] = meta.created_utc
+    handle.attrs[L.ATTR_SCENE_SHA256] = scene_digest(meta.scene_toml)
     handle.create_dataset(L.SCENE_DATASET, data=meta.scene_toml, dtype=h5py.string_dtype("utf-8"))
+
+
+def scene_digest(text: str) -> str:
+    """SHA-256 (hex) of the scene text's UTF-8 bytes (root attribute ``scene_sha256``)."""
+    return hashlib.sha256(text.encode("utf-8", "surrogatepass")).hexdigest()
 
 
 def read_metadata(handle: h5py.File) -> RunMetadata:
     scene = handle.get(L.SCENE_DATASET)
     if not isinstance(scene, h5py.Dataset) or scene.shape != () or scene.dtype.kind != "O":
         raise fail(handle, f"text dataset {L.SCENE_DATASET!r} is missing or not a string")
+    text = decoded(scene, lambda: scene.asstr()[()])
+    if L.ATTR_SCENE_SHA256 in handle.attrs and text_attr(handle, L.ATTR_SCENE_SHA256) != scene_digest(text):
+        raise fail(scene, f"the scene text does not match its checksum (root attribute {L.ATTR_SCENE_SHA256!r}): "
+                          "damaged bytes")
     return decoded(
         handle,
         lambda: RunMetadata(
-            scene_toml=scene.asstr()[()],
+            scene_toml=text,
             seed=number_attr(handle, L.ATTR_SEED, integer=True),
             stand=text_attr(handle, L.ATTR_STAND),
             created_utc=text_attr(handle, L.ATTR_CREATED_UTC),

@@ -24,7 +24,10 @@ ATTR_PACKAGE_VERSION = "package_version"
 ATTR_SEED = "seed"
 ATTR_STAND = "stand"
 ATTR_CREATED_UTC = "created_utc"
-ROOT_ATTRS = (ATTR_FORMAT, ATTR_FORMAT_VERSION, ATTR_PACKAGE_VERSION, ATTR_SEED, ATTR_STAND, ATTR_CREATED_UTC)
+ATTR_SCENE_SHA256 = "scene_sha256"
+"""SHA-256 (hex) of the UTF-8 scene text: the text lives in HDF5's global heap, which has no checksum."""
+ROOT_ATTRS = (ATTR_FORMAT, ATTR_FORMAT_VERSION, ATTR_PACKAGE_VERSION, ATTR_SEED, ATTR_STAND, ATTR_CREATED_UTC,
+              ATTR_SCENE_SHA256)
 
 # Root objects.
 SCENE_DATASET = "scene_toml"

@@ -33,7 +33,8 @@ from rig.logbook.writer import RUN_PART, same_run
 from rig.runner.dask_pool import check_scheduler
 from rig.runner.figures import reduced_vs_truth_figure
 from rig.runner.folder_lock import folder_lock
-from rig.runner.outputs import REDUCED_FIGURE, STAND_KIND, SUMMARY_NAME, claim_folder, output_folder, remove_stale, staged_outputs
+from rig.runner.outputs import (REDUCED_FIGURE, STAND_KIND, SUMMARY_NAME, claim_folder, output_folder, remove_stale,
+                                staged_outputs)
 from rig.runner.pool import WorkerError
 from rig.runner.reduction import Reduction, gathered_table, read_truth_if_any, reduce_to_files, table_to_files
 from rig.runner.summary import RunFacts, off_truth_points, summary_text

@@ -187,7 +187,8 @@ def parse_procedure(table: Mapping[str, object], settings_specs: Mapping[str, ob
     try:
         gate = T.number(T.dotted(WHERE, "gate_time_s"), given_gate, 0.0, max_gate_time_s, "s", lo_open=True)
     except ParameterError as error:
-        raise ParameterError(error.name, error.value, f"{gate_range}{f': {gate_limit}' if gate_limit else ''}") from None
+        valid = f"{gate_range}: {gate_limit}" if gate_limit else gate_range
+        raise ParameterError(error.name, error.value, valid) from None
     repeats = validate.integer(T.dotted(WHERE, "repeats"), table.get("repeats", 1), 1, MAX_POINTS)
     policy = T.member(TimeoutPolicy, table.get("on_settle_timeout", TimeoutPolicy.SKIP.value),
                       T.dotted(WHERE, "on_settle_timeout"))

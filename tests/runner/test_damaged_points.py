@@ -289,3 +289,20 @@ def test_a_folder_named_log_h5_is_named_at_once(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "log.h5" in err and "a folder (or another non-file) of that name is in the way" in err
     assert not (tmp_path / "log.h5.parts").exists()  # refused before anything was simulated
+
+
+def test_a_flipped_byte_in_the_truth_is_named_not_dropped(flip_setup, tmp_path):
+    """The truth columns never vanish silently: a truth chunk failing its checksum is a named error."""
+    good_log, _, folder = flip_setup
+    with h5py.File(good_log, "r") as f:
+        info = f["truth/mu"].id.get_chunk_info(0)
+    status, err, _ = _reduce_flipped(good_log, [(info.byte_offset + info.size // 2, 0x5A)], folder)
+    assert status == 2 and len(err) == 1 and "/truth/mu: unreadable" in err[0], err
+
+
+def test_a_flipped_byte_in_the_scene_text_is_named(flip_setup):
+    """The scene text (HDF5's global heap, no checksum of its own) is checked against scene_sha256."""
+    good_log, _, folder = flip_setup
+    offset = good_log.read_bytes().index(b"mu = 0.4") + len("mu = 0.")
+    status, err, _ = _reduce_flipped(good_log, [(offset, ord("4") ^ ord("5"))], folder)  # mu = 0.5
+    assert status == 2 and len(err) == 1 and "does not match its checksum" in err[0], err

@@ -61,7 +61,8 @@ def test_run_onto_a_full_disk_names_the_file_and_the_rerun_completes(small_disk,
     for level in levels:
         lines = level["stderr"].splitlines()
         assert level["status"] == 2 and len(lines) == 1, level
-        match = re.fullmatch(rf"rig run: error: No space left on device: {re.escape(str(small_disk))}/run/(\S+)", lines[0])
+        prefix = f"rig run: error: No space left on device: {small_disk}/run/"
+        match = re.fullmatch(rf"{re.escape(prefix)}(\S+)", lines[0])
         assert match, lines[0]
         failed_at.add(match.group(1))
         assert level["rerun_status"] == 0 and level["rerun_stderr"] == "", level
