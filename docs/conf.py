@@ -37,7 +37,7 @@ extensions = [
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 root_doc = "index"
-exclude_patterns = ["_build", "Thumbs.db", ".DS_Store", "accuracy-contact-sweep.md", "gallery/**/*.ipynb", "gallery/**/*.py",
+exclude_patterns = ["_build", "Thumbs.db", ".DS_Store", "sg_execution_times.rst", "accuracy-contact-sweep.md", "gallery/**/*.ipynb", "gallery/**/*.py",
                     "gallery/**/*.md5", "gallery/**/*.zip", "gallery/**/*.json"]
 templates_path = ["_templates"]
 
