@@ -24,6 +24,7 @@ from __future__ import annotations
 import argparse
 import datetime
 import itertools
+import json
 import os
 import platform
 import sys
@@ -43,6 +44,14 @@ POINTS = ((0.0, 0.0), (0.5, 0.5), (-1.0, 1.0))
 GOAL = (0.002, 0.004)  # |d nu_v|, |d nu_0| at the default grid
 POISSON = 0.28
 FALLBACK_GRIDS = (16, 32, 64)  # the reference's grids where the solver does not converge on n = 128
+# b/a = 10's grid at n = 128 has 768 x 192 cells (rig.contact.grid: rows and columns of a wide contact), and
+# a partial-slip solve there takes minutes: its reference is n = 16 / 32 / 64 (up to 384 x 96 cells)
+WIDE = 10.0
+
+
+def reference_grids(b: float) -> tuple[int, int, int]:
+    """The three grids of a state's converged reference."""
+    return FALLBACK_GRIDS if b >= WIDE else REFERENCE_GRIDS
 CONTACT_TOML = Path(__file__).resolve().parents[1] / "tests" / "contact" / "data" / "contact_fortran_pure_spin.toml"
 
 
@@ -58,7 +67,7 @@ def nu(b: float, alpha: float, c: float, l: float, n: int, model: str = "kinemat
 
 def _state(args):
     (b, alpha, c, l), grids = args
-    values = {n: nu(b, alpha, c, l, n) for n in sorted(set(grids) | set(REFERENCE_GRIDS) | set(FALLBACK_GRIDS))}
+    values = {n: nu(b, alpha, c, l, n) for n in sorted(set(grids) | set(reference_grids(b)) | set(FALLBACK_GRIDS))}
     print(f"b/a {b:g} alpha' {alpha:g} C ({c:g}, {l:g}): " + ", ".join(
         f"n {n} {v[0]:.5f} {v[1]:.5f}" for n, v in values.items()), file=sys.stderr, flush=True)
     return values
@@ -104,7 +113,7 @@ def independent_rows() -> list[tuple]:
                  0.0, ref.limit[1], ref.uncertainty[1], solved[3][1]))
     for b in SHAPES:
         linear = nu(b, 1e4, 0.0, 0.0, DEFAULT_N, model="linear")[0]
-        solved = [nu(b, 1e4, 0.0, 0.0, n) for n in (*REFERENCE_GRIDS, DEFAULT_N)]
+        solved = [nu(b, 1e4, 0.0, 0.0, n) for n in (*reference_grids(b), DEFAULT_N)]
         ref = richardson(*solved[:3])
         # Kalker's table: 3 significant digits, half a unit of the last as the uncertainty
         rows.append((f"b/a {b:g}, pure spin, alpha' 1e4: linear theory, Kalker's C23", "nu_v", linear,
@@ -124,19 +133,37 @@ def main() -> int:
     parser.add_argument("--grids", type=int, nargs="+", default=[16, 24, 32])
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--markdown", type=Path)
+    parser.add_argument("--save", type=Path, help="also write the solved values (JSON) to this file")
+    parser.add_argument("--load", type=Path, help="take the solved values from a --save file instead of solving")
     args = parser.parse_args()
-    solved = sweep(args.grids, args.jobs)
+    if args.load:
+        stored = json.loads(args.load.read_text())
+        solved = {tuple(s["state"]): {int(n): np.array(v, dtype=float) for n, v in s["values"].items()}
+                  for s in stored["sweep"]}
+        checks = [tuple(row) for row in stored["independent"]]
+    else:
+        solved = sweep(args.grids, args.jobs)
+        checks = independent_rows()
+    if args.save:
+        args.save.write_text(json.dumps({"sweep": [{"state": list(k), "values": {str(n): [float(x) for x in v]
+                                                                                  for n, v in vals.items()}}
+                                                   for k, vals in solved.items()],
+                                         "independent": [list(row) for row in checks]}))
     worst = {}
     state_lines = []
     fallbacks = []
+    unconverged: set[str] = set()
     for (b, alpha, c, l), values in solved.items():
-        ref = richardson(*(values[n] for n in REFERENCE_GRIDS))
-        if not np.all(np.isfinite(ref.limit)) and all(n in values for n in FALLBACK_GRIDS):
+        ref = richardson(*(values[n] for n in reference_grids(b)))
+        if not np.all(np.isfinite(ref.limit)) and reference_grids(b) != FALLBACK_GRIDS:
             ref = richardson(*(values[n] for n in FALLBACK_GRIDS))  # the solver did not converge on n = 128
             fallbacks.append(f"b/a {b:g}, alpha' {alpha:g}, C ({c:g}, {l:g})")
         for n in args.grids:
             for k, d in enumerate(np.abs(values[n] - ref.limit)):
                 key = (n, b, k)
+                if not np.isfinite(d):
+                    unconverged.add(f"b/a {b:g}, alpha' {alpha:g}, C ({c:g}, {l:g})")
+                    continue
                 if d + ref.uncertainty[k] > sum(worst.get(key, (-1.0, 0.0))[:2]):
                     worst[key] = (d, ref.uncertainty[k], alpha, c, l)
         state_lines.append(
@@ -152,12 +179,17 @@ def main() -> int:
             ok = "yes" if dv[0] + dv[1] <= GOAL[0] and d0[0] + d0[1] <= GOAL[1] else "no"
             cells = [f"{d[0]:.4f} + {d[1]:.4f} ({d[2]:g}, {d[3]:g}, {d[4]:g})" for d in (dv, d0)]
             lines.append(f"| {n}{' (default)' if n == DEFAULT_N else ''} | {b:g} | {cells[0]} | {cells[1]} | {ok} |")
+    lines += ["", "Reference grids: n = 32 / 64 / 128; for b/a = 10 n = 16 / 32 / 64 (its n = 128 grid has 768 x 192 "
+              "cells)."]
     if fallbacks:
         lines += ["", f"Reference from n = 16 / 32 / 64 (Newton did not converge on n = 128) at: {'; '.join(fallbacks)}."]
+    if unconverged:
+        lines += ["", "No converged value (Newton did not converge within 150 steps on a grid of the reference): "
+                  + "; ".join(sorted(unconverged)) + "."]
     table = "\n".join(lines)
     independent = ["| independent value | quantity | value +- its uncertainty | converged (ours) +- | "
                    "converged - value | n = 32 - value |", "|---|---|---|---|---|---|"]
-    for what, name, value, unc, ref, ref_unc, at32 in independent_rows():
+    for what, name, value, unc, ref, ref_unc, at32 in checks:
         independent.append(f"| {what} | {name} | {value:.5f} +- {unc:.5f} | {ref:.5f} +- {ref_unc:.5f} | "
                            f"{ref - value:+.5f} | {at32 - value:+.5f} |")
     table2 = "\n".join(independent)
@@ -169,7 +201,7 @@ def main() -> int:
             "## The default grid against converged values\n\n"
             "Pure spin and offset spin (C = (0.5, 0.5) a inside, (-1, 1) a outside the contact) over b/a 0.1 - 10 and\n"
             "alpha' 0.1 - 1000 (135 states, nu = 0.28): the largest error of nu_v and nu_0 at each grid n against\n"
-            "the state's converged value - Richardson's extrapolation of n = 32 / 64 / 128 with the observed order,\n"
+            "the state's converged value - Richardson's extrapolation of n = 32 / 64 / 128 (b/a = 10: 16 / 32 / 64) with the observed order,\n"
             "whose own uncertainty (Roache's grid convergence index, factor of safety 1.25) is added to the error\n"
             "(rig.contact.numerical_error.richardson). Goal: |d nu_v| <= 0.002, |d nu_0| <= 0.004.\n\n"
             + table + "\n\n"

@@ -74,7 +74,8 @@ def rows_across(n: int, b_over_a: float) -> int:
     spin moment nu_0, carried by that traction times x up to b, converges slowly in the rows: at b/a =
     10, alpha' = 325, pure spin, with cells of aspect 2.5, nu_0 = 0.36211 / 0.36327 / 0.36410 / 0.36492
     with 32 / 48 (4 n columns) / 48 / 64 rows (6 n and 8 n columns) at n = 32, against a converged value
-    near 0.367 (docs/accuracy-contact-sweep.md).
+    of 0.3655 (this grid on n = 16 / 32 / 64 extrapolated at the observed order 2.3; 0.3663 at first
+    order; docs/accuracy-contact-sweep.md).
     """
     narrow = min(2.0, max(1.0, NARROW_B_OVER_A / b_over_a))
     wide = min(WIDE_ROWS, max(1.0, b_over_a / WIDE_B_OVER_A))
