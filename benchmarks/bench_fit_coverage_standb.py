@@ -1,4 +1,4 @@
-"""Coverage of `rig fit`'s 95 % intervals for mu and Psi on stand-B twin runs at Psi = 2.5 (issue: acceptance 1).
+"""Coverage of `rig fit`'s 95 % intervals for mu and Psi on stand-B twin runs at Psi = 2.5.
 
 For each seed the stand-B scene (default tests/fit/data/stand_b_psi25.toml: 60 N, mu = 0.6, Psi = 2.5,
 seven points) is run with that seed - new noise and new calibration-weight errors - without the
