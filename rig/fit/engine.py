@@ -18,8 +18,9 @@ ranges).
 rises 3.84 (chi2 with 1 degree of freedom) above the minimum; an end that does not rise that far
 within the parameter's range is the range's end and is flagged open. Standard uncertainty and
 correlations: from the Gauss-Newton covariance (J^T J)^-1 at the optimum, with J the Jacobian of
-the weighted residuals. No rescaling by chi2/dof: the data's u is taken as stated (the summary
-gives chi2/dof so that a poor fit is visible).
+the weighted residuals. The data's u is taken as stated; where it is a guess (a digitised
+curve) and chi2 has p < MISFIT_ALPHA, u and the intervals are widened by the Birge ratio
+sqrt(chi2/dof) (widen_misfit); the goodness of fit is reported by rig.fit.run either way.
 """
 
 from __future__ import annotations
