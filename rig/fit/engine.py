@@ -11,8 +11,8 @@ minimisation: held fixed, the weights do not see that a larger slope also spread
 the estimate is attenuated like a least-squares slope on a noisy regressor (measured on stand-A
 runs: mu 0.13 % low, docs/fit.md). The residuals are whitened by a linear map W with
 |W r|^2 = r^T V^-1 r (Weights: V's O(N) structured form, rig.fit.covariance, so no N x N matrix is
-formed; the Cholesky factor of V where a dense common covariance is given) and minimised with scipy.optimize.least_squares (trust-region reflective, bounds = the
-ranges).
+formed; the Cholesky factor of V where a dense common covariance is given) and minimised with
+scipy.optimize.least_squares (trust-region reflective, bounds = the ranges).
 
 95 % interval of a parameter: the values where the profile chi2 (minimised over the others)
 rises 3.84 (chi2 with 1 degree of freedom) above the minimum; an end that does not rise that far
