@@ -11,15 +11,16 @@ minimisation: held fixed, the weights do not see that a larger slope also spread
 the estimate is attenuated like a least-squares slope on a noisy regressor (measured on stand-A
 runs: mu 0.13 % low, docs/fit.md). The residuals are whitened by a linear map W with
 |W r|^2 = r^T V^-1 r (Weights: V's O(N) structured form, rig.fit.covariance, so no N x N matrix is
-formed; the Cholesky factor of V where a dense common covariance is given) and minimised with scipy.optimize.least_squares (trust-region reflective, bounds = the
-ranges).
+formed; the Cholesky factor of V where a dense common covariance is given) and minimised with
+scipy.optimize.least_squares (trust-region reflective, bounds = the ranges).
 
 95 % interval of a parameter: the values where the profile chi2 (minimised over the others)
 rises 3.84 (chi2 with 1 degree of freedom) above the minimum; an end that does not rise that far
 within the parameter's range is the range's end and is flagged open. Standard uncertainty and
 correlations: from the Gauss-Newton covariance (J^T J)^-1 at the optimum, with J the Jacobian of
-the weighted residuals. No rescaling by chi2/dof: the data's u is taken as stated (the summary
-gives chi2/dof so that a poor fit is visible).
+the weighted residuals. The data's u is taken as stated; where it is a guess (a digitised
+curve) and chi2 has p < MISFIT_ALPHA, u and the intervals are widened by the Birge ratio
+sqrt(chi2/dof) (widen_misfit); the goodness of fit is reported by rig.fit.run either way.
 """
 
 from __future__ import annotations

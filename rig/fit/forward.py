@@ -1,7 +1,7 @@
 """The forward model of a fit: predicted y at every data point for given parameter values.
 
 Cost (docs/fit.md): the contact coefficients (nu_T, nu_v, nu_0) are evaluated at *nodes* of the
-free effect parameters (17 equally spaced over each parameter's range)
+free effect parameters (33 equally spaced over each parameter's range, spacing 0.0625 in Psi)
 * for stand data (alpha' = mu K depends on mu) from the stand's own cached surrogate tables
   (rig.contact.surrogate over l/a, c/a, log alpha'; one table per b/a and node, built once and
   then loaded from the cache), so a model evaluation costs milliseconds;
@@ -12,9 +12,11 @@ and interpolated between them by cubic Hermite pieces with central-difference sl
 The coefficients are not smooth in an effect's parameter (at fig10's states nu_v stays flat in
 Psi up to a threshold and then bends: the grid's cells turn from slip to stick one at a time; at
 b/a = 2, alpha' = 1.15, l/a = 0.5, n = 16 none sticks up to Psi = 1.5, one of 256 from 1.55, two
-at 2), so the nodes must be close. Interpolation error against the table at the exact Psi (fig10's 24 states, Psi 1-3): at
-most 1.1e-4 with 5 nodes and a global spline (before 2026-11-27), 1.6e-5 with 17 (median 1.5e-6;
-a global spline through 17 nodes is as close and costs 17 node evaluations a value).
+at 2), so the nodes must be close. Measured at stand-A points with alpha' 7-10 (R_x = 20 mm,
+150/300 N, n = 16; benchmarks/bench_fit_coverage.py's scene), against the stand's table at the
+exact Psi: with 17 nodes the interpolation errs by up to 5.9e-4 in F_y/F_N at Psi = 1.3 - one
+point-to-point u, chi2 2.8 of the difference alone, which biased Psi high (+0.045 on average);
+with 33 nodes by up to 1.1e-4 (chi2 0.15). Nodes are built only where the fit reaches them.
 :meth:`ForwardModel.direct` evaluates the same prediction by direct solves at the exact
 parameter values; the fit reports table-vs-direct at the optimum and polishes with it when that
 difference is not small against the data's u.
@@ -31,7 +33,7 @@ from rig.contact.solve import solve
 from rig.fit.data import Observations
 from rig.fit.parameters import PARAMETERS, FitParameter
 
-NODES_PER_EFFECT = 17
+NODES_PER_EFFECT = 33
 
 
 class ForwardModel:
