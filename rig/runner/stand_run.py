@@ -37,7 +37,8 @@ from rig.runner.outputs import REDUCED_FIGURE, SUMMARY_NAME, output_folder, remo
 from rig.runner.pool import WorkerError
 from rig.runner.reduction import Reduction, gathered_table, read_truth_if_any, reduce_to_files, table_to_files
 from rig.runner.summary import RunFacts, summary_text
-from rig.runner.sweep import SETTLE_TRUTH, Failure, ShardedSweep, run_sharded_sweep, run_sweep
+from rig.runner.chunks import SETTLE_TRUTH
+from rig.runner.sweep import Failure, ShardedSweep, run_sharded_sweep, run_sweep
 from rig.scenes.stand_scene import StandScene
 from rig.stands.base import Stand
 
@@ -102,17 +103,15 @@ def _run_locked(scene: StandScene, out_dir: Path, jobs: int, scheduler: str | No
     plan = scene.procedure.points()
     done = set(writer.done).union(*(shard.indices for shard in earlier))
     todo = [point for point in plan if point.index not in done]
-    sharded = bool(earlier) or ((scheduler is not None or jobs > 1) and len(todo) > 1)
-    serial = not sharded and scheduler is None
+    sharded = bool(earlier) or (scheduler is not None and bool(todo)) or (jobs > 1 and len(todo) > 1)
     try:
         if sharded:
             sweep = run_sharded_sweep(scene, stand, todo, earlier, folder, writer.metadata, jobs=jobs,
                                       progress=progress, scheduler=scheduler)
         else:
-            if serial and todo:
+            if todo:
                 stand.calibrate(scene.seed)
-            sweep = run_sweep(scene, stand if serial else None, todo, writer, jobs=1 if serial else jobs,
-                              progress=progress, scheduler=scheduler)
+            sweep = run_sweep(scene, stand, todo, writer, progress=progress)
     except RigError as error:
         if not isinstance(error, WorkerError):  # a named error of the scene: a rerun would meet it again
             _discard(writer, log_path)
