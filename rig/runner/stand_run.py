@@ -171,8 +171,11 @@ def _finalize(writer: LogWriter, log_path: Path, earlier: list[Shard], sweep: Sh
         return None
     merge_logs(log_path, writer.metadata, sources, tmp_folder=staging_dir(log_path),
                columns=[sweep.columns.get(shard.indices[0]) for shard in shards])
+    sweep.columns.clear()  # the parent's memory: the per-point columns are in the log now
     _discard(writer, log_path)
-    return gathered_table([sweep.tables.get(shard.indices[0]) for shard in shards])
+    tables = [sweep.tables.get(shard.indices[0]) for shard in shards]
+    sweep.tables.clear()
+    return gathered_table(tables)
 
 
 def _write_outputs(scene: StandScene, stand: Stand, log_path: Path, facts: RunFacts, staging: Path,
