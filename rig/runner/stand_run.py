@@ -3,13 +3,19 @@
 Order: lock the folder (rig.runner.folder_lock: a second run into it is refused by name) ->
 build the stand with the scene's effects only (an error there leaves nothing) -> open the log
 (resuming an interrupted run of the same scene; the points of a finished log of the same run are
-not simulated again, so a run killed while writing its outputs only redoes those) -> calibrate
-once -> sweep the points not yet logged, writing each as it finishes -> remove the previous run's
-outputs -> finalize log.h5 -> reduce (reduced.csv and ``/reduced`` in the log) -> figures ->
-summary.txt, the outputs staged and moved into the folder whole (rig.runner.outputs). The points
-run in this process, on a local process pool (``jobs`` > 1) or on a
-Dask cluster (``scheduler``: a scheduler's address; rig.runner.dask_pool). A point that does
-not settle is reported (policy: rig.runner.operator). A named error of the scene (a
+not simulated again, so a run killed while writing its outputs only redoes those) -> sweep the
+points not yet logged -> remove the previous run's outputs -> finalize log.h5 -> reduce
+(reduced.csv and ``/reduced`` in the log) -> figures -> summary.txt, the outputs staged and moved
+into the folder whole (rig.runner.outputs).
+
+In this process (``jobs`` = 1) the stand is calibrated once and the points are written one by one
+into the log's journal (rig.logbook.writer), then the log is reduced whole. On a local process
+pool (``jobs`` > 1) or a Dask cluster (``scheduler``: a scheduler's address) the points run in
+chunks (rig.runner.chunks): each worker simulates, logs (a shard, rig.logbook.shards) and reduces
+its chunk; this process stores the shards in the log's staging folder, merges them into log.h5
+and writes the reduced rows the workers sent (the log is reduced whole only where the chunks'
+tables differ). An interrupted run with shards resumes in chunks, whatever ``jobs``. A point that
+does not settle is reported (policy: rig.runner.operator). A named error of the scene (a
 ParameterError, ConvergenceError, ... raised while calibrating or inside a point) removes the
 staging folder - running the same scene again would meet it again - and propagates; any other
 error (an interruption, a full disk, a worker lost: rig.runner.pool.WorkerError) propagates with

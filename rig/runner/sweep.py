@@ -1,12 +1,13 @@
-"""The sweep: run the planned points that are not yet in the log, writing each one as it finishes.
+"""The sweep: run the planned points that are not yet in the log, logging each as it finishes.
 
-Points already in the log's staging folder (an interrupted run of the same scene) are skipped:
-rig.logbook.LogWriter resumes, and since every point is simulated from its own arguments the
-resumed log equals an uninterrupted one. ``jobs`` = 1 runs the operator in this process on one
-simpy clock; ``jobs`` > 1 runs the points on a local process pool (rig.runner.pool), a
-``scheduler`` address on a Dask cluster (rig.runner.dask_pool), both with identical results.
-A tqdm progress bar counts the points; it is silent when stderr is not a terminal (or when
-``progress`` is False).
+:func:`run_sweep` runs the operator in this process on one simpy clock and writes every point
+into the log's journal (rig.logbook.LogWriter: points already in an interrupted run's staging
+folder are skipped, and since every point is simulated from its own arguments the resumed log
+equals an uninterrupted one). :func:`run_sharded_sweep` runs chunks of points on a local process
+pool (rig.runner.pool), a Dask cluster (rig.runner.dask_pool) or this process
+(rig.runner.chunks), storing each chunk's shard as it arrives, in point order. A tqdm progress
+bar counts the points; it is silent when stderr is not a terminal (or when ``progress`` is
+False).
 
 Each point's truth gets one entry from the operator: ``operator_settle_time`` [s], the
 simulated time the point took to settle as ``settle`` reported it (read back for the summary,
