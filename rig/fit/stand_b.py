@@ -44,6 +44,7 @@ import pandas as pd
 from rig.contact.solve import solve
 from rig.errors import LogFormatError, ParameterError
 from rig.fit.common_errors import CommonErrors
+from rig.fit.covariance import StructuredCovariance
 from rig.fit.data import ContactCondition, Observations
 from rig.fit.forward import hermite_stencil
 
@@ -60,20 +61,52 @@ class InstrumentCalibrations:
     """The covariance of the stacked y shared between points: each instrument's one calibration.
 
     blocks: (indices of the instrument's observations, CommonErrors of its calibration). The
-    interface is rig.fit.common_errors.CommonErrors's: covariance(y) with the sensitivity's part at
-    the values y (the true y's estimate), covariance(None) without it.
+    interface is rig.fit.common_errors.CommonErrors's (low_rank, variance, covariance, structured,
+    with the sensitivity's part at the values y, the true y's estimate, or without it for y None):
+    the blocks' low-rank factors side by side, so the fit keeps it in O(N) memory.
     """
+
+    fixed = None  # no dense part: the engine takes the structured (O(N)) form
+    walk = None  # no zero drift shared between the instruments' points
 
     def __init__(self, size: int, blocks: list[tuple[np.ndarray, CommonErrors]]) -> None:
         self.size = size
         self.blocks = blocks
 
+    def low_rank(self, y: np.ndarray | None) -> np.ndarray | None:
+        """G (N, m) with G G^T this covariance at the values y: each block's factor in its own rows and columns."""
+        parts = []
+        for index, errors in self.blocks:
+            g = errors.low_rank(None if y is None else np.asarray(y, dtype=float)[index])
+            if g is not None:
+                parts.append((index, g))
+        if not parts:
+            return None
+        out = np.zeros((self.size, sum(g.shape[1] for _, g in parts)))
+        column = 0
+        for index, g in parts:
+            out[index, column:column + g.shape[1]] = g
+            column += g.shape[1]
+        return out
+
+    def variance(self, y: np.ndarray | None) -> np.ndarray:
+        """The diagonal of :meth:`covariance` in O(N)."""
+        out = np.zeros(self.size)
+        for index, errors in self.blocks:
+            out[index] += errors.variance(None if y is None else np.asarray(y, dtype=float)[index])
+        return out
+
     def covariance(self, y: np.ndarray | None) -> np.ndarray:
+        """(N, N) covariance [1]; for small N and tests (the fit uses :meth:`structured`)."""
         out = np.zeros((self.size, self.size))
         for index, errors in self.blocks:
             part = errors.covariance(None if y is None else np.asarray(y, dtype=float)[index])
             out[np.ix_(index, index)] = part
         return out
+
+    def structured(self, y: np.ndarray | None, independent: np.ndarray) -> StructuredCovariance:
+        """diag(independent) + this covariance at y, in O(N) form."""
+        return StructuredCovariance(independent, self.low_rank(y), None)
 
 
 @dataclass(frozen=True, eq=False)

@@ -5,10 +5,10 @@ the results delivered in point order, so the log, the failures and the STOP poli
 a serial run; an error inside a point comes back as rig.runner.pool.WorkerError naming the
 point, the error type, its text and the worker's traceback.
 
-The scene goes to the workers once (scattered); one task simulates a batch of consecutive points
-with the operator of rig.runner.operator - about TASKS_PER_THREAD batches per worker thread, at
-most MAX_BATCH points each - so that a study of 10^5 points is a few thousand tasks, not 10^5
-tasks each carrying the scene (the scheduler's cost grows with the tasks). A worker
+The scene goes to the workers once (scattered); one task is a chunk of consecutive points
+(rig.runner.chunks: simulated, logged as a shard and reduced on the worker; about 8 chunks per
+worker thread, at most 512 points each), so that a study of 10^5 points is a few hundred tasks,
+not 10^5 tasks each carrying the scene (the scheduler's cost grows with the tasks). A worker
 thread builds its stand from the scene and calibrates it once per run (a pure function of the run
 seed by the contract, so every worker holds the records the serial run holds), then keeps it for
 the run's further points. Stands are kept per (run, worker thread) - a worker with several threads
@@ -31,9 +31,7 @@ from collections.abc import Callable, Sequence
 
 import rig
 from rig.errors import ParameterError
-from rig.runner.operator import PointResult
-from rig.runner.pool import PointFailure, WorkerError, accept, ends_sweep, simulate_point
-from rig.scenes.procedure import PlannedPoint
+from rig.runner.pool import WorkerError
 from rig.scenes.stand_scene import StandScene
 from rig.stands.base import Stand
 
@@ -48,12 +46,6 @@ CONNECT_TIMEOUT_S = 30.0
 
 MAX_CACHED_RUNS = 2
 """A worker keeps the calibrated stands of this many most recent runs."""
-
-TASKS_PER_THREAD = 8
-"""Batches per worker thread [1]: enough for the threads to share the points evenly."""
-
-MAX_BATCH = 64
-"""Most points in one task [1] (results come back, and are logged, a batch at a time)."""
 
 _stands: OrderedDict[str, dict[int, Stand]] = OrderedDict()  # run token -> {thread id: stand}
 _stands_lock = threading.Lock()
@@ -100,30 +92,6 @@ def _stand_for(run: str, scene: StandScene) -> Stand:
         while len(_stands) > MAX_CACHED_RUNS:
             _stands.popitem(last=False)
     return stand
-
-
-def _simulate(run: str, version: str, scene: StandScene, point: PlannedPoint) -> PointResult | PointFailure:
-    """One point on a worker; any error comes back as text (picklable)."""
-    if rig.__version__ != version:
-        return PointFailure.of(point, WorkerError(f"the worker has friction-rig {rig.__version__}, the client {version}"))
-    try:
-        stand = _stand_for(run, scene)
-    except Exception as error:  # noqa: BLE001 - the stand failed to build or calibrate on the worker
-        return PointFailure.of(point, error)
-    return simulate_point(stand, scene, point)
-
-
-def _simulate_batch(run: str, version: str, scene: StandScene,
-                    points: Sequence[PlannedPoint]) -> list[PointResult | PointFailure]:
-    """The task: consecutive points on a worker, up to the first that ends the sweep (an error, or
-    a point that did not settle under the STOP policy: the client stops there, as a serial run)."""
-    results = []
-    for point in points:
-        result = _simulate(run, version, scene, point)
-        results.append(result)
-        if ends_sweep(result, scene):
-            break
-    return results
 
 
 def _task(run: str, version: str, scene: StandScene, task):
@@ -179,12 +147,6 @@ def run_dask_tasks(scene: StandScene, make_tasks: Callable[[int], Sequence], add
         client.close()
 
 
-def batch_size(points: int, threads: int) -> int:
-    """Points per task: about TASKS_PER_THREAD tasks per worker thread (a cluster without workers yet
-    counts as one), 1 to MAX_BATCH points each."""
-    return max(1, min(MAX_BATCH, -(-points // (max(1, threads) * TASKS_PER_THREAD))))
-
-
 def _connect(address: str):
     """A distributed.Client of the scheduler at ``address`` (not made the default client)."""
     client_class = _client_class(address)
@@ -195,34 +157,3 @@ def _connect(address: str):
     raise ParameterError("scheduler", address, "the address of a running Dask scheduler, e.g. tcp://127.0.0.1:8786",
                          hint=f"could not connect: {reason}")
 
-
-def run_dask(scene: StandScene, points: Sequence[PlannedPoint], address: str,
-             deliver: Callable[[PointResult], None]) -> None:
-    """Simulate ``points`` on the cluster of the scheduler at ``address``; ``deliver`` gets each result in
-    point order. Batches not needed after a STOP are cancelled."""
-    client = _connect(address)
-    run = uuid.uuid4().hex
-    futures: list = []
-    try:
-        size = batch_size(len(points), sum(client.nthreads().values()))
-        batches = [points[i:i + size] for i in range(0, len(points), size)]
-        shared = client.scatter(scene, broadcast=True, hash=False)  # once, not with every task
-        futures = [client.submit(_simulate_batch, run, rig.__version__, shared, batch,
-                                 key=f"rig-points-{batch[0].index}-{batch[-1].index}-{run}") for batch in batches]
-        for i, (batch, future) in enumerate(zip(batches, futures)):
-            try:
-                results = future.result()
-                future.release()  # the worker may forget a batch once it is read (a large study's memory)
-                futures[i] = None
-            except Exception as error:  # noqa: BLE001 - a worker died, the task was lost or not (un)picklable
-                point = batch[0]
-                raise WorkerError(f"point {point.index} {dict(point.settings)}"
-                                  f"{f' (and the {len(batch) - 1} after it in its batch)' if len(batch) > 1 else ''}: "
-                                  f"the Dask cluster did not run it ({type(error).__name__}: {error})") from error
-            if any(accept(result, scene, deliver) for result in results):
-                break
-    finally:
-        pending = [future for future in futures if future is not None]
-        if pending:
-            client.cancel(pending)
-        client.close()

@@ -1,9 +1,9 @@
-"""Operating points on a local process pool (``--jobs N``), results identical to a serial run.
+"""Chunks of operating points on a local process pool (``--jobs N``), results identical to a serial run.
 
 Each worker process builds its own stand from the scene and runs the stand's calibration once
 (a pure function of the run seed by the contract, so every worker holds the records the
-serial run holds); then it simulates one point per task with the operator of
-rig.runner.operator. Results come back in point order, so the log, the failures and the
+serial run holds); then it does one chunk per task (rig.runner.chunks: simulate, log as a
+shard, reduce). Results come back in point order, so the log, the failures and the
 STOP policy are the same as in a serial run. Processes are started with "spawn" (no inherited
 state; the stand class must be importable by its module path).
 
@@ -12,8 +12,8 @@ handle; a reducer registered on multiprocessing's pickler (only there) sends the
 An error inside a worker comes back as :class:`PointFailure`: a named error (rig.errors.RigError)
 is raised in the parent as it was raised in the worker, as a serial run raises it; any other
 comes back as text with its traceback and is raised as :class:`WorkerError` naming the point.
-Workers ignore Ctrl-C (the parent reports it). ``simulate_point``, ``accept`` and ``ends_sweep`` are shared with
-the Dask path (rig.runner.dask_pool).
+Workers ignore Ctrl-C (the parent reports it). :class:`PointFailure` and :class:`WorkerError` are shared
+with the Dask path (rig.runner.dask_pool).
 """
 
 from __future__ import annotations
@@ -30,8 +30,7 @@ from dataclasses import dataclass
 from multiprocessing.reduction import ForkingPickler
 
 from rig.errors import RigError
-from rig.runner.operator import PointResult, run_operator
-from rig.scenes.procedure import PlannedPoint, TimeoutPolicy
+from rig.scenes.procedure import PlannedPoint
 from rig.scenes.stand_scene import StandScene
 
 
@@ -69,31 +68,6 @@ class PointFailure:
                            f"{self.message}\n{self.trace}")
 
 
-def simulate_point(stand, scene: StandScene, point: PlannedPoint) -> PointResult | PointFailure:
-    """One point with the operator (the task of a worker); any error comes back as text."""
-    results: list[PointResult] = []
-    try:
-        run_operator(stand, [point], scene.procedure, scene.seed, results.append)
-    except Exception as error:  # noqa: BLE001 - sent back whole, raised in the parent as WorkerError
-        return PointFailure.of(point, error)
-    return results[0]
-
-
-def ends_sweep(result: PointResult | PointFailure, scene: StandScene) -> bool:
-    """True when no point after this one is needed: an error, or a point that did not settle
-    under the STOP policy."""
-    return isinstance(result, PointFailure) or (
-        result.failure is not None and scene.procedure.on_settle_timeout is TimeoutPolicy.STOP)
-
-
-def accept(result: PointResult | PointFailure, scene: StandScene, deliver: Callable[[PointResult], None]) -> bool:
-    """Deliver a worker's result in point order; True when the STOP policy ends the sweep here."""
-    if isinstance(result, PointFailure):
-        raise result.error()
-    deliver(result)
-    return ends_sweep(result, scene)
-
-
 _worker: dict = {}
 
 TASKS_AHEAD = 3
@@ -105,10 +79,6 @@ def _start_worker(scene: StandScene) -> None:
     stand = scene.build_stand()
     stand.calibrate(scene.seed)
     _worker.update(scene=scene, stand=stand)
-
-
-def _simulate(point: PlannedPoint) -> PointResult | PointFailure:
-    return simulate_point(_worker["stand"], _worker["scene"], point)
 
 
 def _run_task(task):
@@ -146,22 +116,3 @@ def run_pool_tasks(scene: StandScene, make_tasks: Callable[[int], Sequence], job
     finally:
         pool.shutdown(wait=True, cancel_futures=True)
 
-
-def run_pool(scene: StandScene, points: Sequence[PlannedPoint], jobs: int,
-             deliver: Callable[[PointResult], None]) -> None:
-    """Simulate ``points`` on ``jobs`` processes; ``deliver`` gets each result in point order."""
-    context = multiprocessing.get_context("spawn")
-    pool = ProcessPoolExecutor(max_workers=jobs, mp_context=context, initializer=_start_worker, initargs=(scene,))
-    try:
-        futures = collections.deque(pool.submit(_simulate, point) for point in points)
-        while futures:
-            future = futures.popleft()  # not kept once read: a large study's results would stay in memory
-            try:
-                result = future.result()
-            except BrokenProcessPool as error:  # a worker died, e.g. the stand failed to build or calibrate
-                raise WorkerError(f"a worker process of the pool failed ({error}); run with --jobs 1 to see the "
-                                  "error of the stand") from None
-            if accept(result, scene, deliver):
-                break
-    finally:
-        pool.shutdown(wait=True, cancel_futures=True)

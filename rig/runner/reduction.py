@@ -102,18 +102,20 @@ def gathered_table(tables: list[pd.DataFrame | None]) -> pd.DataFrame | None:
     """The reduced table of a log from the reduced tables of its shards (in point order): their rows
     one after the other, as the whole log's reduction gives them (a point's row depends only on
     its record). None when a shard's table is missing or the tables differ in columns, dtypes or
-    units (then the log is reduced whole)."""
+    units (then the log is reduced whole). ``tables`` is emptied once they are joined (the parent's
+    memory then holds the whole table only)."""
     if not tables or any(table is None for table in tables):
         return None
     first = tables[0]
+    notes = list(dict.fromkeys(note for part in tables for note in part.attrs.get("notes", ())))
     for table in tables[1:]:
         if (list(table.columns) != list(first.columns) or not table.dtypes.equals(first.dtypes)
                 or table.attrs.get("units") != first.attrs.get("units") or table.index.name != first.index.name):
             return None
     table = pd.concat(tables) if len(tables) > 1 else first.copy()
+    tables.clear()  # the caller's list: the chunks' tables are not held beside the whole one
     if not table.index.is_monotonic_increasing or not table.index.is_unique:
         return None
-    notes = list(dict.fromkeys(note for part in tables for note in part.attrs.get("notes", ())))
     table.attrs = {"units": dict(first.attrs.get("units", {}))} | ({"notes": notes} if notes else {})
     return table
 

@@ -3,13 +3,19 @@
 Order: lock the folder (rig.runner.folder_lock: a second run into it is refused by name) ->
 build the stand with the scene's effects only (an error there leaves nothing) -> open the log
 (resuming an interrupted run of the same scene; the points of a finished log of the same run are
-not simulated again, so a run killed while writing its outputs only redoes those) -> calibrate
-once -> sweep the points not yet logged, writing each as it finishes -> remove the previous run's
-outputs -> finalize log.h5 -> reduce (reduced.csv and ``/reduced`` in the log) -> figures ->
-summary.txt, the outputs staged and moved into the folder whole (rig.runner.outputs). The points
-run in this process, on a local process pool (``jobs`` > 1) or on a
-Dask cluster (``scheduler``: a scheduler's address; rig.runner.dask_pool). A point that does
-not settle is reported (policy: rig.runner.operator). A named error of the scene (a
+not simulated again, so a run killed while writing its outputs only redoes those) -> sweep the
+points not yet logged -> remove the previous run's outputs -> finalize log.h5 -> reduce
+(reduced.csv and ``/reduced`` in the log) -> figures -> summary.txt, the outputs staged and moved
+into the folder whole (rig.runner.outputs).
+
+In this process (``jobs`` = 1) the stand is calibrated once and the points are written one by one
+into the log's journal (rig.logbook.writer), then the log is reduced whole. On a local process
+pool (``jobs`` > 1) or a Dask cluster (``scheduler``: a scheduler's address) the points run in
+chunks (rig.runner.chunks): each worker simulates, logs (a shard, rig.logbook.shards) and reduces
+its chunk; this process stores the shards in the log's staging folder, merges them into log.h5
+and writes the reduced rows the workers sent (the log is reduced whole only where the chunks'
+tables differ). An interrupted run with shards resumes in chunks, whatever ``jobs``. A point that
+does not settle is reported (policy: rig.runner.operator). A named error of the scene (a
 ParameterError, ConvergenceError, ... raised while calibrating or inside a point) removes the
 staging folder - running the same scene again would meet it again - and propagates; any other
 error (an interruption, a full disk, a worker lost: rig.runner.pool.WorkerError) propagates with
@@ -38,7 +44,8 @@ from rig.runner.outputs import (REDUCED_FIGURE, STAND_KIND, SUMMARY_NAME, claim_
 from rig.runner.pool import WorkerError
 from rig.runner.reduction import Reduction, gathered_table, read_truth_if_any, reduce_to_files, table_to_files
 from rig.runner.summary import RunFacts, off_truth_points, summary_text
-from rig.runner.sweep import SETTLE_TRUTH, Failure, ShardedSweep, run_sharded_sweep, run_sweep
+from rig.runner.chunks import SETTLE_TRUTH
+from rig.runner.sweep import Failure, ShardedSweep, run_sharded_sweep, run_sweep
 from rig.scenes.stand_scene import StandScene
 from rig.stands.base import Stand
 
@@ -106,17 +113,15 @@ def _run_locked(scene: StandScene, out_dir: Path, jobs: int, scheduler: str | No
     plan = scene.procedure.points()
     done = set(writer.done).union(*(shard.indices for shard in earlier))
     todo = [point for point in plan if point.index not in done]
-    sharded = bool(earlier) or ((scheduler is not None or jobs > 1) and len(todo) > 1)
-    serial = not sharded and scheduler is None
+    sharded = bool(earlier) or (scheduler is not None and bool(todo)) or (jobs > 1 and len(todo) > 1)
     try:
         if sharded:
             sweep = run_sharded_sweep(scene, stand, todo, earlier, folder, writer.metadata, jobs=jobs,
                                       progress=progress, scheduler=scheduler)
         else:
-            if serial and todo:
+            if todo:
                 stand.calibrate(scene.seed)
-            sweep = run_sweep(scene, stand if serial else None, todo, writer, jobs=1 if serial else jobs,
-                              progress=progress, scheduler=scheduler)
+            sweep = run_sweep(scene, stand, todo, writer, progress=progress)
     except RigError as error:
         if not isinstance(error, WorkerError):  # a named error of the scene: a rerun would meet it again
             _discard(writer, log_path)
@@ -177,8 +182,11 @@ def _finalize(writer: LogWriter, log_path: Path, earlier: list[Shard], sweep: Sh
         return None
     merge_logs(log_path, writer.metadata, sources, tmp_folder=staging_dir(log_path),
                columns=[sweep.columns.get(shard.indices[0]) for shard in shards])
+    sweep.columns.clear()  # the parent's memory: the per-point columns are in the log now
     _discard(writer, log_path)
-    return gathered_table([sweep.tables.get(shard.indices[0]) for shard in shards])
+    tables = [sweep.tables.get(shard.indices[0]) for shard in shards]
+    sweep.tables.clear()
+    return gathered_table(tables)
 
 
 def _write_outputs(scene: StandScene, stand: Stand, log_path: Path, facts: RunFacts, staging: Path,

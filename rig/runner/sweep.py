@@ -1,12 +1,13 @@
-"""The sweep: run the planned points that are not yet in the log, writing each one as it finishes.
+"""The sweep: run the planned points that are not yet in the log, logging each as it finishes.
 
-Points already in the log's staging folder (an interrupted run of the same scene) are skipped:
-rig.logbook.LogWriter resumes, and since every point is simulated from its own arguments the
-resumed log equals an uninterrupted one. ``jobs`` = 1 runs the operator in this process on one
-simpy clock; ``jobs`` > 1 runs the points on a local process pool (rig.runner.pool), a
-``scheduler`` address on a Dask cluster (rig.runner.dask_pool), both with identical results.
-A tqdm progress bar counts the points; it is silent when stderr is not a terminal (or when
-``progress`` is False).
+:func:`run_sweep` runs the operator in this process on one simpy clock and writes every point
+into the log's journal (rig.logbook.LogWriter: points already in an interrupted run's staging
+folder are skipped, and since every point is simulated from its own arguments the resumed log
+equals an uninterrupted one). :func:`run_sharded_sweep` runs chunks of points on a local process
+pool (rig.runner.pool), a Dask cluster (rig.runner.dask_pool) or this process
+(rig.runner.chunks), storing each chunk's shard as it arrives, in point order. A tqdm progress
+bar counts the points; it is silent when stderr is not a terminal (or when ``progress`` is
+False).
 
 Each point's truth gets one entry from the operator: ``operator_settle_time`` [s], the
 simulated time the point took to settle as ``settle`` reported it (read back for the summary,
@@ -22,16 +23,17 @@ from dataclasses import dataclass, field
 import pandas as pd
 from tqdm import tqdm
 
-from rig.errors import ParameterError
 from rig.logbook import LogWriter, RunMetadata
 from rig.logbook.shards import LogColumns, Shard, store_shard
 from rig.runner.chunks import SETTLE_TRUTH, ChunkResult, ReduceTask, logged_truth, run_task, simulate_tasks
-from rig.runner.dask_pool import run_dask, run_dask_tasks
+from rig.runner.dask_pool import run_dask_tasks
 from rig.runner.operator import PointResult, run_operator
-from rig.runner.pool import run_pool, run_pool_tasks
+from rig.runner.pool import run_pool_tasks
 from rig.scenes.procedure import PlannedPoint, TimeoutPolicy
 from rig.scenes.stand_scene import StandScene
 from rig.stands.base import Stand
+
+__all__ = ["SETTLE_TRUTH", "Failure", "ShardedSweep", "SweepResult", "run_sharded_sweep", "run_sweep", "show_progress"]
 
 
 
@@ -60,14 +62,10 @@ def show_progress(progress: bool | None) -> bool:
     return sys.stderr.isatty() if progress is None else bool(progress)
 
 
-def run_sweep(scene: StandScene, stand: Stand | None, points: Sequence[PlannedPoint], writer: LogWriter, *,
-              jobs: int, progress: bool | None, scheduler: str | None = None) -> SweepResult:
-    """Simulate ``points`` and write each finished one into ``writer``.
-
-    ``stand``: a calibrated stand for the serial path (``jobs`` == 1, no ``scheduler``); ignored
-    with a pool or a cluster, whose workers build and calibrate their own. ``scheduler``: address
-    of a Dask scheduler (rig.runner.dask_pool.check_scheduler; ``jobs`` is then 1), None: local.
-    """
+def run_sweep(scene: StandScene, stand: Stand, points: Sequence[PlannedPoint], writer: LogWriter, *,
+              progress: bool | None) -> SweepResult:
+    """Simulate ``points`` in this process with the calibrated ``stand`` on one simpy clock and
+    write each finished one into ``writer`` (its journal: resumable point by point)."""
     result = SweepResult()
     with tqdm(total=len(points), desc=f"scene {scene.name}", unit="point", disable=not show_progress(progress),
               file=sys.stderr) as bar:
@@ -82,14 +80,7 @@ def run_sweep(scene: StandScene, stand: Stand | None, points: Sequence[PlannedPo
                 result.written.append(point.index)
             bar.update(1)
 
-        if scheduler is not None:
-            run_dask(scene, points, scheduler, deliver)
-        elif jobs == 1:
-            if stand is None:
-                raise ParameterError("stand", None, "a calibrated stand for a serial sweep")
-            result.operator_time_s = run_operator(stand, points, scene.procedure, scene.seed, deliver)
-        else:
-            run_pool(scene, points, jobs, deliver)
+        result.operator_time_s = run_operator(stand, points, scene.procedure, scene.seed, deliver)
     return result
 
 

@@ -28,6 +28,7 @@ import pandas as pd
 import pytest
 from distributed import Client, LocalCluster
 
+import rig.runner.chunks
 import rig.runner.dask_pool
 import rig.stands
 from rig.errors import ParameterError
@@ -113,8 +114,8 @@ def test_dask_stops_where_one_job_stops(scheduler, tmp_path):
 @pytest.mark.parametrize("changes", [SWEEP, STOP], ids=["skip", "stop"])
 def test_batches_of_several_points_equal_one_job(scheduler, tmp_path, monkeypatch, changes):
     """One task per worker thread (batches of 3 points): failures, the STOP and the log as one job."""
-    monkeypatch.setattr(rig.runner.dask_pool, "TASKS_PER_THREAD", 1)
-    assert rig.runner.dask_pool.batch_size(6, 2) == 3
+    monkeypatch.setattr(rig.runner.chunks, "CHUNKS_PER_WORKER", 1)
+    assert rig.runner.chunks.chunk_size(6, 2) == 3
     scene = parse_scene(scene_text(changes), name="fake")
     one = run_scene(scene, tmp_path / "one", progress=False)
     cluster = run_scene(scene, tmp_path / "dask", scheduler=scheduler, progress=False)
@@ -122,9 +123,9 @@ def test_batches_of_several_points_equal_one_job(scheduler, tmp_path, monkeypatc
     _same_outputs(tmp_path / "one", tmp_path / "dask")
 
 
-def test_batch_size_shares_the_points_between_the_threads():
-    assert [rig.runner.dask_pool.batch_size(n, 2) for n in (1, 16, 17, 1600, 100_000)] == [1, 1, 2, 64, 64]
-    assert rig.runner.dask_pool.batch_size(5, 0) == 1
+def test_chunk_size_shares_the_points_between_the_workers():
+    assert [rig.runner.chunks.chunk_size(n, 2) for n in (1, 16, 17, 1600, 100_000)] == [1, 1, 2, 100, 512]
+    assert rig.runner.chunks.chunk_size(5, 0) == 1
 
 
 def test_short_stand_a_scene_on_dask_equals_one_job(scheduler, tmp_path):
@@ -231,7 +232,8 @@ def test_each_worker_thread_keeps_its_own_stand_for_the_last_runs(monkeypatch):
 def test_a_worker_with_another_friction_rig_version_fails_the_point():
     scene = parse_scene(scene_text(NO_FIGURES), name="fake")
     point = scene.procedure.points()[0]
-    failure = rig.runner.dask_pool._simulate("run-v", "0.0.0-other", scene, point)
+    task = rig.runner.chunks.SimulateTask((point,), RunMetadata(scene.text, scene.seed, scene.stand, utc_timestamp()), True)
+    failure = rig.runner.dask_pool._task("run-v", "0.0.0-other", scene, task).error
     assert failure.point == point and failure.kind == "WorkerError"
     assert failure.message == f"the worker has friction-rig {rig.__version__}, the client 0.0.0-other"
 
