@@ -284,7 +284,8 @@ def load_run(path: str | Path, scene=None, *, n: int | None = None, force_scene:
     from rig.logbook.reader import read_metadata
     from rig.scenes.load import parse_scene
 
-    table, log = read_run_table(path)
+    path = Path(path)
+    log = path.with_name("log.h5") if path.suffix == ".csv" else path
     meta = read_metadata(log)
     stored = parse_scene(meta.scene_toml, name=f"stored in {log}", source=str(log))
     forced = []
@@ -302,7 +303,8 @@ def load_run(path: str | Path, scene=None, *, n: int | None = None, force_scene:
     name = getattr(stand, "name", "")
     if name not in RUN_LOADERS:
         raise ParameterError("stand", name, "one of " + ", ".join(RUN_LOADERS) + " (the stands rig fit reads)")
-    obs = RUN_LOADERS[name](table, log, scene, stand, Path(path), n)
+    table = read_run_table(path)[0] if name in READS_REDUCED_TABLE else None  # stand B reads its readings only
+    obs = RUN_LOADERS[name](table, log, scene, stand, path, n)
     if forced:
         obs = dataclasses.replace(obs, notes=tuple(forced) + obs.notes)
     return obs
@@ -382,4 +384,6 @@ def _stand_b_observations(table, log, scene, stand, path, n) -> Observations:
 
 
 RUN_LOADERS = {"yoke": _stand_a_observations, "disc_roller": _stand_b_observations}
-"""Stand name -> loader of its run (load_run)."""
+"""Stand name -> loader of its run (load_run): function(table, log, scene, stand, path, n)."""
+READS_REDUCED_TABLE = {"yoke"}
+"""The stands whose loader takes the run's reduced table (the others read the log's readings; table None)."""

@@ -6,9 +6,6 @@ fit does not flag a misfit. (The full study's numbers, with profiles: docs/fit.m
 
 from __future__ import annotations
 
-import importlib.util
-from pathlib import Path
-
 import pytest
 
 from rig.fit.forward import ForwardModel
@@ -16,15 +13,11 @@ from rig.fit.parameters import parse_names
 from rig.fit.run import load_data
 from tests.fit.conftest import SMALL_STATIC_RATIO_RUN
 
-SCRIPT = Path(__file__).resolve().parents[2] / "benchmarks" / "bench_fit_coverage.py"
-
-
 @pytest.fixture(scope="module")
 def study():
-    spec = importlib.util.spec_from_file_location("bench_fit_coverage", SCRIPT)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    from benchmarks import bench_fit_coverage
+
+    return bench_fit_coverage
 
 
 def test_null_data_seeds(study, static_ratio_run):

@@ -2,19 +2,11 @@
 
 from __future__ import annotations
 
-import importlib.util
-import sys
-from pathlib import Path
-
-SCRIPT = Path(__file__).resolve().parents[2] / "benchmarks" / "bench_fit_coverage_standb.py"
-
 
 def load_script():
-    spec = importlib.util.spec_from_file_location("bench_fit_coverage_standb", SCRIPT)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module  # its dataclass looks its module up there
-    spec.loader.exec_module(module)
-    return module
+    from benchmarks import bench_fit_coverage_standb
+
+    return bench_fit_coverage_standb
 
 
 def test_one_seed_covers_mu_and_psi(tmp_path):
