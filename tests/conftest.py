@@ -14,11 +14,22 @@ import tempfile
 
 from rig.contact.surrogate_cache import ENV_VARIABLE
 
-SESSION_CACHE = tempfile.mkdtemp(prefix="friction-rig-test-cache-")
-"""The session's cache folder (removed when the session ends)."""
+OWNER = "RIG_TEST_CACHE_OWNER"
+"""Set beside the cache variable by the process that made the folder: pytest-xdist's workers inherit
+both from the controller and share its folder (a table built by one worker is loaded by the other;
+the cache's files are written atomically), and only the controller removes it."""
 
-os.environ[ENV_VARIABLE] = SESSION_CACHE
+if os.environ.get(OWNER) and os.environ.get(ENV_VARIABLE):
+    SESSION_CACHE = os.environ[ENV_VARIABLE]
+    _OWNED = False
+else:
+    SESSION_CACHE = tempfile.mkdtemp(prefix="friction-rig-test-cache-")
+    """The session's cache folder (removed when the session ends)."""
+    os.environ[ENV_VARIABLE] = SESSION_CACHE
+    os.environ[OWNER] = str(os.getpid())
+    _OWNED = True
 
 
 def pytest_sessionfinish(session, exitstatus):
-    shutil.rmtree(SESSION_CACHE, ignore_errors=True)
+    if _OWNED:
+        shutil.rmtree(SESSION_CACHE, ignore_errors=True)

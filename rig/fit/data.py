@@ -285,7 +285,7 @@ def load_run(path: str | Path, scene=None, *, n: int | None = None, force_scene:
     from rig.scenes.load import parse_scene
 
     path = Path(path)
-    log = path.with_name("log.h5") if path.suffix == ".csv" else path
+    table, log = read_run_table(path) if path.suffix == ".csv" else (None, path)  # a table given is checked first
     meta = read_metadata(log)
     stored = parse_scene(meta.scene_toml, name=f"stored in {log}", source=str(log))
     forced = []
@@ -303,7 +303,8 @@ def load_run(path: str | Path, scene=None, *, n: int | None = None, force_scene:
     name = getattr(stand, "name", "")
     if name not in RUN_LOADERS:
         raise ParameterError("stand", name, "one of " + ", ".join(RUN_LOADERS) + " (the stands rig fit reads)")
-    table = read_run_table(path)[0] if name in READS_REDUCED_TABLE else None  # stand B reads its readings only
+    if table is None and name in READS_REDUCED_TABLE:  # stand B reads its readings only
+        table = read_run_table(path)[0]
     obs = RUN_LOADERS[name](table, log, scene, stand, path, n)
     if forced:
         obs = dataclasses.replace(obs, notes=tuple(forced) + obs.notes)

@@ -1,7 +1,8 @@
 """Property (issue 14 acceptance): `rig run` on a scene drawn inside every documented range - the
 stand's mu and every setting within its SettingSpec (one of its choices where it has some) - ends
-in exit 0 (or 1: points that did not settle, listed in summary.txt) with every reduced value finite
-or NaN with its reason, or in exit 2 with one named line and no staging folder. Never a traceback.
+in exit 0 (or 1: points that did not settle, listed in summary.txt; or 4: a reduced point off its
+truth, named in a WARNING that opens summary.txt) with every reduced value finite or NaN with its
+reason, or in exit 2 with one named line and no staging folder. Never a traceback.
 
 Few examples, one point each, short gates and a coarse contact model called directly (n = 8, no
 surrogate table: a table per drawn load and mu would cost more than the point), so it stays
@@ -76,11 +77,13 @@ def test_rig_run_on_any_scene_in_range_is_a_result_or_one_named_line(tmp_path, c
         assert len(lines) == 1 and lines[0].startswith("rig run: error: "), err
         assert not staging_dir(folder / "out" / "log.h5").exists()
         return
-    assert code in (0, 1), err
+    assert code in (0, 1, 4), (code, err, text)
     summary = (folder / "out" / "summary.txt").read_text()
     if code == 1:
         assert "failures (did not settle):" in summary
         return
+    if code == 4:
+        assert summary.startswith("WARNING"), summary[:300]
     table = pd.read_csv(folder / "out" / "reduced.csv", index_col="point", keep_default_na=False,
                         na_values=[""])
     for name in QUANTITIES:
