@@ -175,22 +175,6 @@ class StandBObservations(Observations):
         return nu + (dl * slope / (mu * norm))[:, None] * self.weights
 
 
-def is_stand_b_run(path: str | Path, scene=None) -> bool:
-    """True when DATA is a stand-B run: the scene given, or the one stored in the log, is stand B's."""
-    if scene is not None and hasattr(scene, "stand"):
-        return scene.stand == STAND
-    from rig.logbook.reader import read_metadata
-
-    path = Path(path)
-    log = path.with_name("log.h5") if path.suffix == ".csv" else path
-    if path.suffix not in (".csv", ".h5", ".hdf5") or not log.is_file():
-        return False
-    try:
-        return read_metadata(log).stand == STAND
-    except LogFormatError:
-        return False
-
-
 def load_stand_b_run(path: str | Path, scene=None, *, n: int | None = None) -> StandBObservations:
     """Observations F_T/F_N, F_V/F_N, T_Mo/(a F_N) versus l/a from a stand-B run (module docstring).
 

@@ -16,7 +16,8 @@ import pytest
 
 import rig.cli
 from rig.fit import fit_data
-from rig.fit.stand_b import QUANTITY, is_stand_b_run, load_stand_b_run
+from rig.fit.run import load_data
+from rig.fit.stand_b import QUANTITY, StandBObservations, load_stand_b_run
 from rig.logbook.truth import read_truth
 
 DATA = Path(__file__).parent / "data"
@@ -31,7 +32,7 @@ def observations():
 
 def test_readings_are_the_instruments_within_their_u_of_the_truth(observations):
     obs = observations
-    assert is_stand_b_run(LOG)
+    assert isinstance(load_data(LOG), StandBObservations)  # rig fit's loading takes the log to stand B's loader
     assert obs.size == 3 * 7 and set(obs.quantity) == set(QUANTITY.values())
     truth = read_truth(LOG)
     a = 0.004  # roller half length [m] (docs/stand-b.md)
