@@ -85,6 +85,12 @@ class ElasticLaw:
         steps = np.arange(1, self.transport.shape[0])[:, None]
         return position[self.grid.index[None, :] - steps * self.grid.ny]
 
+    @property
+    def traction_is_interface(self) -> bool:
+        """True when q = t (no surface inertia, or an inertia number of 0): the bound |q| <= r then
+        bounds the unknowns themselves."""
+        return self.inertia is None or self.inertia.number == 0.0
+
     def displacement(self, t: np.ndarray) -> np.ndarray:
         """U (2, nx, ny) [mu p0 a/G] on the grid rectangle of tractions t (2, N) [mu p0] at the cells
         (the first cells' moment-matched share moved when there is an entry profile)."""
