@@ -183,8 +183,11 @@ def main() -> int:
               "cells)."]
     if fallbacks:
         lines += ["", f"Reference from n = 16 / 32 / 64 (Newton did not converge on n = 128) at: {'; '.join(fallbacks)}."]
+    if not unconverged:
+        lines += ["", f"Every one of the {len(solved)} states has a converged value: Newton converged on each grid of "
+                  "its reference."]
     if unconverged:
-        lines += ["", "No converged value (Newton did not converge within 150 steps on a grid of the reference): "
+        lines += ["", "No converged value (Newton did not converge within its step limit on a grid of the reference): "
                   + "; ".join(sorted(unconverged)) + "."]
     table = "\n".join(lines)
     independent = ["| independent value | quantity | value +- its uncertainty | converged (ours) +- | "
