@@ -3,6 +3,7 @@ study scales out on worker processes.
 
     python benchmarks/bench_scale.py [--points 100 1600 10000] [--repeats 1] [--jobs 1] [--gate-time 4.0]
                                      [--study 100000] [--study-workers 2] [--scaling 10000]
+                                     [--scaling-runs j1 j2 cluster] [--peak-memory] [--ceiling 256]
 
 The scene is the built-in `default` (stand A, quasi-static drive, 4 s gates, instruments on)
 with only the sweep's `num` raised (issue 12). Each run is `python -m rig run SCENE -o DIR` in a
@@ -30,7 +31,15 @@ point [ms]; the serial fraction s = parent CPU / (parent + workers CPU) - the pa
 worker can take over - and Amdahl's projection of the wall time and speed-up on 8, 32 and 128
 workers, wall(p) = total CPU (s + (1 - s)/p); the speed-up of ``-j 2`` and of the cluster over
 ``-j 1`` measured in the same run, and the load average before each run. ``--peak-memory`` adds
-the parent's peak resident memory [MB] of each run (ru_maxrss).
+the parent's peak resident memory [MB] of each run (ru_maxrss). The cluster's workers run with
+Dask's statistical profiler off (WORKER_CONFIG, as docs/scaling.md advises).
+
+``--ceiling N`` measures what two processes can gain on this machine at most: a chunk of N points
+simulated, logged and reduced as a worker does it (no pool, no cluster, no parent), repeated, in
+one process alone and then in two processes at once; it prints the CPU time per point of each
+(equal when two busy cores do not slow each other down) and the speed-up of two processes over
+one, the ceiling of the ``-j 2`` and cluster speed-ups (which add the parent's serial part and
+the workers' start).
 """
 
 from __future__ import annotations
@@ -112,13 +121,26 @@ def run_once(scene: Path, jobs: int, extra: list[str] | None = None) -> dict[str
     return {"wall": wall, "cpu": cpu, "load": load, "size": size, "raw": raw, "frames": frames}
 
 
+WORKER_CONFIG = {"distributed.worker.profile.enabled": False}
+"""The LocalCluster's workers as docs/scaling.md advises for a study: Dask's statistical profiler
+off (it samples the running task's stack every 10 ms on the worker's event loop: 0.45-0.56 s of a
+worker's CPU per 10 s of a chunk against 0.19-0.23 s without it, measured side by side)."""
+
+
+def local_cluster(workers: int):
+    """A LocalCluster of ``workers`` one-thread worker processes configured as WORKER_CONFIG."""
+    import dask
+    from distributed import LocalCluster
+
+    with dask.config.set(WORKER_CONFIG):  # the nannies hand the configuration to their worker processes
+        return LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None)
+
+
 def dask_run(scene: Path, workers: int) -> dict[str, float]:
     """The scene on a LocalCluster of ``workers`` one-thread worker processes; CPU time includes the
     workers' (counted when the cluster has closed them)."""
-    from distributed import LocalCluster
-
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+    with local_cluster(workers) as cluster:
         run = run_once(scene, 1, ["--scheduler", cluster.scheduler_address])
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     run["cpu"] = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
@@ -188,10 +210,9 @@ def scaling(points: int, gate_time_s: float, folder: Path, peak_memory: bool, wh
     if "j2" in which:
         runs["-j 2"] = scaling_run(scene, "2")
     if "cluster" in which:
-        from distributed import Client, LocalCluster
+        from distributed import Client
 
-        with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
-                Client(cluster.scheduler_address, set_as_default=False) as client:
+        with local_cluster(2) as cluster, Client(cluster.scheduler_address, set_as_default=False) as client:
             runs["LocalCluster 2 workers"] = scaling_run(scene, cluster.scheduler_address, client)
     print(f"\nscaling: {points} points, the default scene (gate {gate_time_s:g} s); parent = the process that runs "
           "the study, workers = the pool's processes or the cluster's workers")
@@ -213,6 +234,53 @@ def scaling(points: int, gate_time_s: float, folder: Path, peak_memory: bool, wh
               f"the budget {100 * BUDGET_PARENT_SHARE:g} %); speed-up over -j 1 {base / run['wall']:.2f}x "
               f"({verdict(base / run['wall'] >= BUDGET_SPEEDUP_2)} the budget {BUDGET_SPEEDUP_2:g}x on an idle 2-core "
               f"machine); Amdahl: {projection}")
+
+
+def ceiling_child(scene: str, repeats: int) -> int:
+    """In a fresh process (``--ceiling-child``): simulate, log and reduce the scene's points as one
+    chunk (rig.runner.chunks, as a worker does) once to warm up, then ``repeats`` times; print the
+    CPU time and the wall time [s] of the repeats as one line of JSON."""
+    import json
+
+    from rig.logbook import RunMetadata, utc_timestamp
+    from rig.runner.chunks import SimulateTask, run_task
+    from rig.scenes import load_scene
+
+    loaded = load_scene(scene)
+    stand = loaded.build_stand()
+    stand.calibrate(loaded.seed)
+    task = SimulateTask(tuple(loaded.procedure.points()),
+                        RunMetadata(loaded.text, loaded.seed, loaded.stand, utc_timestamp()), True)
+    run_task(stand, loaded, task)
+    cpu, wall = time.process_time(), time.perf_counter()
+    for _ in range(repeats):
+        run_task(stand, loaded, task)
+    print(json.dumps({"cpu": time.process_time() - cpu, "wall": time.perf_counter() - wall}))
+    return 0
+
+
+def ceiling(points: int, repeats: int, gate_time_s: float, folder: Path) -> None:
+    """The most two processes can gain on this machine: the same chunk work (``points`` points,
+    ``repeats`` times, after a warm-up) in one process alone, then in two processes at once; the
+    CPU time per point of each and the speed-up of two processes (twice the work) over one."""
+    import json
+
+    scene = scene_file(folder, points, gate_time_s)
+    command = [sys.executable, __file__, "--ceiling-child", str(scene), str(repeats)]
+    print(f"\nceiling: a chunk of {points} points x {repeats} (simulate, log, reduce: a worker's work, no pool, "
+          "no cluster) in 1 process, then in 2 processes at once")
+    results = {}
+    for processes in (1, 2):
+        load = os.getloadavg()[0]
+        t0 = time.perf_counter()
+        children = [subprocess.Popen(command, stdout=subprocess.PIPE, text=True) for _ in range(processes)]
+        runs = [json.loads(child.communicate()[0].strip().splitlines()[-1]) for child in children]
+        results[processes] = max(run["wall"] for run in runs)
+        print(f"{processes} process(es): load {load:.2f}, CPU per point " + ", ".join(
+            f"{1e3 * run['cpu'] / (points * repeats):.3f} ms" for run in runs) + f" (wall of the repeats "
+              + ", ".join(f"{run['wall']:.2f} s" for run in runs) + f"; whole {time.perf_counter() - t0:.2f} s)")
+    print(f"two processes do twice the work in {results[2] / results[1]:.2f} times the wall time of one: the "
+          f"ceiling of a speed-up on 2 workers here is {2 * results[1] / results[2]:.2f}x")
 
 
 def verdict(met: bool) -> str:
@@ -242,10 +310,17 @@ def main() -> int:
     parser.add_argument("--peak-memory", action="store_true", help="print the parent's peak memory of each --scaling run")
     parser.add_argument("--scaling-runs", nargs="+", choices=sorted(SCALING_RUNS), default=list(SCALING_RUNS),
                         help="which --scaling runs (default: all three)")
+    parser.add_argument("--ceiling", type=int, default=0, metavar="POINTS",
+                        help="also measure the ceiling of two processes: a chunk of POINTS points in 1 process, "
+                             "then in 2 at once")
+    parser.add_argument("--ceiling-repeats", type=int, default=10, help="repeats of the --ceiling chunk (default 10)")
+    parser.add_argument("--ceiling-child", nargs=2, metavar=("SCENE", "REPEATS"), help=argparse.SUPPRESS)
     parser.add_argument("--child", nargs=3, metavar=("SCENE", "OUT", "WHERE"), help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.child:
         return child_run(*args.child)
+    if args.ceiling_child:
+        return ceiling_child(args.ceiling_child[0], int(args.ceiling_child[1]))
 
     with tempfile.TemporaryDirectory(prefix="bench_scale_scenes_") as folder:
         warm = scene_file(Path(folder), 3, args.gate_time)
@@ -276,6 +351,8 @@ def main() -> int:
             print(study_line(f"Dask LocalCluster, {args.study_workers} workers", args.study,
                              dask_run(scene, args.study_workers)))
             print(study_line(f"-j {args.study_workers}", args.study, run_once(scene, args.study_workers)))
+        if args.ceiling:
+            ceiling(args.ceiling, args.ceiling_repeats, args.gate_time, Path(folder))
         if args.scaling:
             scaling(args.scaling, args.gate_time, Path(folder), args.peak_memory, args.scaling_runs)
     return 0

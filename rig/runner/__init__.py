@@ -9,17 +9,35 @@ See docs/scenes.md.
 
 from __future__ import annotations
 
+import importlib
 from pathlib import Path
 
 from rig import validate
 from rig.errors import ParameterError
-from rig.runner.characteristics_run import run_characteristics_scene
-from rig.runner.oscillation_run import run_oscillation_scene
-from rig.runner.operator import PointResult, Step, run_operator
-from rig.runner.outputs import SUMMARY_NAME
-from rig.runner.reduce_file import reduce_log_file
-from rig.runner.stand_run import LOG_NAME, MAX_JOBS, RunReport, run_stand_scene
 from rig.scenes import CharacteristicsScene, OscillationScene, Scene
+
+_LAZY = {
+    "LOG_NAME": "rig.runner.stand_run",
+    "MAX_JOBS": "rig.runner.stand_run",
+    "RunReport": "rig.runner.stand_run",
+    "run_stand_scene": "rig.runner.stand_run",
+    "SUMMARY_NAME": "rig.runner.outputs",
+    "PointResult": "rig.runner.operator",
+    "Step": "rig.runner.operator",
+    "run_operator": "rig.runner.operator",
+    "reduce_log_file": "rig.runner.reduce_file",
+}
+"""Names of the package imported from their modules on first use: a worker process that only runs
+chunks (rig.runner.chunks) then never imports the parent's outputs (the figure, the summary's
+statistics, the characteristics and oscillation runs), about half of the package's import time."""
+
+
+def __getattr__(name: str):
+    if name in _LAZY:
+        value = getattr(importlib.import_module(_LAZY[name]), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def run_scene(scene: Scene, out_dir: Path, *, jobs: int = 1, scheduler: str | None = None,
@@ -27,13 +45,19 @@ def run_scene(scene: Scene, out_dir: Path, *, jobs: int = 1, scheduler: str | No
     """Run a validated scene (rig.scenes.load_scene) into ``out_dir``; ``jobs`` > 1 uses a process pool
     for stand scenes, ``scheduler`` (a Dask scheduler's address, with ``jobs`` = 1) a Dask cluster;
     ``progress``: tqdm bar (None: only on a terminal)."""
+    from rig.runner.stand_run import MAX_JOBS, run_stand_scene
+
     jobs = validate.integer("jobs", jobs, 1, MAX_JOBS)
     if scheduler is not None and isinstance(scene, (CharacteristicsScene, OscillationScene)):
         raise ParameterError("scheduler", scheduler, "None for a contact-characteristics or oscillation scene "
                              "(only a stand scene's points run on a Dask cluster)")
     if isinstance(scene, CharacteristicsScene):
+        from rig.runner.characteristics_run import run_characteristics_scene
+
         return run_characteristics_scene(scene, out_dir, progress=progress)
     if isinstance(scene, OscillationScene):
+        from rig.runner.oscillation_run import run_oscillation_scene
+
         return run_oscillation_scene(scene, out_dir, progress=progress)
     return run_stand_scene(scene, out_dir, jobs=jobs, scheduler=scheduler, progress=progress)
 

@@ -69,7 +69,7 @@ def damaged_points(table: pd.DataFrame) -> tuple[int, ...]:
 def attach_truth(table: pd.DataFrame, truth: pd.DataFrame | None) -> pd.DataFrame:
     """``table`` with ``true_<name>`` columns from ``truth`` (rows matched by point index), unless it
     already has truth columns or there is none."""
-    if truth is None or any(str(c).startswith("true_") for c in table.columns):
+    if truth is None or _has_truth_columns(table):
         return table
     table = table.copy()
     truth_units = truth.attrs.get("units", {})
@@ -95,7 +95,13 @@ def reduce_table(stand: Stand, log_path: Path, contact: ContactSpec) -> pd.DataF
     table = stand.reduce_log(log_path, contact)
     if not isinstance(table, pd.DataFrame):
         raise RigError(f"stand {stand.name!r}: reduce_log returned {type(table).__name__}, not a DataFrame")
+    if _has_truth_columns(table):  # the stand put its truth beside it: the log's truth is not read again
+        return table
     return attach_truth(table, read_truth_if_any(log_path))
+
+
+def _has_truth_columns(table: pd.DataFrame) -> bool:
+    return any(str(c).startswith("true_") for c in table.columns)
 
 
 def gathered_table(tables: list[pd.DataFrame | None]) -> pd.DataFrame | None:

@@ -25,6 +25,7 @@ the staging folder intact, so running the scene again resumes.
 from __future__ import annotations
 
 import contextlib
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -46,6 +47,7 @@ from rig.runner.reduction import Reduction, gathered_table, read_truth_if_any, r
 from rig.runner.summary import RunFacts, off_truth_points, summary_text
 from rig.runner.chunks import SETTLE_TRUTH
 from rig.runner.sweep import Failure, ShardedSweep, run_sharded_sweep, run_sweep
+from rig.scenes.procedure import PlannedPoint
 from rig.scenes.stand_scene import StandScene
 from rig.stands.base import Stand
 
@@ -133,8 +135,10 @@ def _run_locked(scene: StandScene, out_dir: Path, jobs: int, scheduler: str | No
         stopped=sweep.stopped, jobs=jobs, scheduler=scheduler, settle_times_s=_settle_times(log_path),
         calibration=_calibration_names(log_path), operator_time_s=sweep.operator_time_s,
     )
+    gathered = [table]  # handed over, not kept here: the parent's memory holds one reduced table at a time
+    del table
     with staged_outputs(out_dir) as staging:
-        files, text, reduction = _write_outputs(scene, stand, log_path, facts, staging, table)
+        files, text, reduction = _write_outputs(scene, stand, log_path, facts, staging, gathered, plan)
     return RunReport(out_dir, tuple(files), len(plan), facts.resumed + facts.written_now, facts.resumed,
                      tuple(sweep.failures), sweep.stopped, text, () if reduction is None else reduction.damaged,
                      () if reduction is None else off_truth_points(reduction.table))
@@ -190,24 +194,29 @@ def _finalize(writer: LogWriter, log_path: Path, earlier: list[Shard], sweep: Sh
 
 
 def _write_outputs(scene: StandScene, stand: Stand, log_path: Path, facts: RunFacts, staging: Path,
-                   table: pd.DataFrame | None = None) -> tuple[list[str], str, Reduction | None]:
-    """Reduce the finalized log (unless ``table``, its reduced table gathered from the workers, is
-    given), draw the figures and write summary.txt into ``staging``; returns the names of the run's
-    files, the summary text and the reduction (None when not reduced)."""
+                   gathered: list[pd.DataFrame | None], plan: Sequence[PlannedPoint]
+                   ) -> tuple[list[str], str, Reduction | None]:
+    """Reduce the finalized log (unless ``gathered`` holds its reduced table gathered from the
+    workers: taken out of the list, so that only the table with the off-truth flags stays in
+    memory), draw the figures of the ``plan``'s points and write summary.txt into ``staging``;
+    returns the names of the run's files, the summary text and the reduction (None when not
+    reduced)."""
     files, problems = [LOG_NAME], []
     reduction: Reduction | None = None
     empty = not point_indices(log_path)
     if scene.outputs.reduce and empty:
         problems.append("not reduced: the log holds no operating point (every point failed)")
     if scene.outputs.reduce and not empty:
-        reduction = (reduce_to_files(stand, log_path, scene.contact, staging) if table is None
-                     else table_to_files(table, log_path, staging))
+        if gathered and gathered[-1] is not None:  # popped into the call: no name here keeps the table
+            reduction = table_to_files(gathered.pop(), log_path, staging)
+        else:
+            reduction = reduce_to_files(stand, log_path, scene.contact, staging)
         files.append(reduction.csv.name)
         problems.extend(reduction.problems)
     campaign_lines: tuple[str, ...] = ()
     if scene.outputs.figures and reduction is not None:
         title = f"{scene.name}: {scene.description}"
-        figure = reduced_vs_truth_figure(reduction.table, scene.procedure.points(), scene.procedure,
+        figure = reduced_vs_truth_figure(reduction.table, plan, scene.procedure,
                                          staging / REDUCED_FIGURE, title)
         if figure is not None:
             files.append(figure.name)

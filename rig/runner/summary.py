@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
-from scipy.stats import norm
+from scipy.special import ndtri
 
 from rig.runner.sweep import Failure
 from rig.scenes.stand_scene import StandScene
@@ -50,7 +50,9 @@ def off_truth_threshold(comparisons: int) -> float:
     """The z that flags a point [1] for a run with ``comparisons`` finite z (module docstring)."""
     if comparisons <= 0:
         return OFF_TRUTH_Z
-    return max(OFF_TRUTH_Z, float(norm.isf(OFF_TRUTH_FAMILY / (2.0 * comparisons))))
+    # Phi^-1(1 - q) = -ndtri(q), what scipy.stats.norm.isf(q) computes, without importing scipy.stats
+    # (about 0.7 s of CPU: a third of the parent's fixed cost in a run on workers)
+    return max(OFF_TRUTH_Z, float(-ndtri(OFF_TRUTH_FAMILY / (2.0 * comparisons))))
 
 
 def with_off_truth(table: pd.DataFrame) -> pd.DataFrame:

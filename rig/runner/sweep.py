@@ -27,6 +27,7 @@ from rig.logbook import LogWriter, RunMetadata
 from rig.logbook.shards import LogColumns, Shard, store_shard
 from rig.runner.chunks import SETTLE_TRUTH, ChunkResult, ReduceTask, logged_truth, run_task, simulate_tasks
 from rig.runner.dask_pool import run_dask_tasks
+from rig.runner.figures import import_in_background
 from rig.runner.operator import PointResult, run_operator
 from rig.runner.pool import run_pool_tasks
 from rig.scenes.procedure import PlannedPoint, TimeoutPolicy
@@ -113,10 +114,14 @@ def run_sharded_sweep(scene: StandScene, stand: Stand, points: Sequence[PlannedP
     def make_tasks(workers: int) -> list:
         return [*earlier_tasks, *simulate_tasks(points, metadata, reduce, workers)]
 
+    preload = scene.outputs.figures and (scheduler is not None or jobs > 1)  # this process only waits meanwhile
+    importing: list = []
     with tqdm(total=len(points), desc=f"scene {scene.name}", unit="point", disable=not show_progress(progress),
               file=sys.stderr) as bar:
 
         def deliver(done: ChunkResult) -> bool:
+            if preload and not importing:  # at the first result: the workers are up, this process waits
+                importing.append(import_in_background())
             result.workers_cpu_s += done.cpu_s
             if done.shard is not None:
                 path = store_shard(folder, done.written[0], done.written[-1], done.shard)

@@ -356,3 +356,19 @@ def _points_in_shards(log) -> int:
         with h5py.File(path, "r") as handle:
             total += handle["points/index"].shape[0]
     return total
+
+
+@pytest.mark.parametrize("points, workers", [(1, 1), (6, 2), (300, 2), (10_000, 2), (100_000, 3)])
+def test_chunks_shrink_at_the_end_so_that_the_workers_finish_together(points, workers):
+    sizes = rig.runner.chunks.chunk_sizes(points, workers)
+    first = rig.runner.chunks.chunk_size(points, workers)
+    assert sum(sizes) == points and all(size >= 1 for size in sizes)
+    assert sizes[0] == first and all(a >= b for a, b in zip(sizes, sizes[1:]))  # never growing
+    smallest = min(first, rig.runner.chunks.MIN_TAIL_CHUNK)
+    assert all(size >= smallest for size in sizes[:-1])  # no tiny chunks but the remainder
+    # what is left when a chunk starts is at least twice the workers' chunks (then each worker's
+    # last chunk is at most half of what the others still have to do), or the chunk is of the minimum
+    left = points
+    for size in sizes:
+        assert size == left or size * 2 * workers <= left + 2 * workers - 1 or size == smallest
+        left -= size
