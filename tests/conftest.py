@@ -12,6 +12,8 @@ import os
 import shutil
 import tempfile
 
+import pytest
+
 from rig.contact.surrogate_cache import ENV_VARIABLE
 
 OWNER = "RIG_TEST_CACHE_OWNER"
@@ -33,3 +35,49 @@ else:
 def pytest_sessionfinish(session, exitstatus):
     if _OWNED:
         shutil.rmtree(SESSION_CACHE, ignore_errors=True)
+
+
+
+GROUPS = {
+    "lab-server": ("tests/lab/test_lab_api.py", "tests/lab/test_lab_browser.py", "tests/lab/test_lab_browser_class.py",
+                   "tests/lab/test_lab_browser_sheet.py", "tests/lab/test_lab_browser_stand_b.py",
+                   "tests/lab/test_lab_restart.py"),
+    "stand-a-fit": ("tests/fit/test_bad_inputs.py", "tests/fit/test_coverage.py", "tests/fit/test_goodness.py",
+                    "tests/fit/test_recovery.py"),
+}
+"""Modules that share a costly session fixture (tests/lab/conftest.py's warmed-up lab server and headless
+Chromium; tests/fit/conftest.py's small stand-A run) or the tables it leaves in the session's cache folder
+(the R_x = 20 mm Psi-node tables of the fits): under pytest-xdist each group runs on one worker, so that it is
+built once, not by both workers at the same time. Every other module is its own group (as --dist loadfile)."""
+
+LONGEST_GROUPS = ("stand-a-fit", "lab-server")
+"""The groups that take longest (about 100 s and 60 s on an idle machine): run first, one per worker, so that
+the short modules fill in after them instead of one worker finishing a long group alone at the end."""
+
+_GROUP_OF_MODULE = {module: group for group, modules in GROUPS.items() for module in modules}
+
+
+def group_of(nodeid: str) -> str:
+    """The group of a test (by its node id): its module's entry in GROUPS, else its module."""
+    module = nodeid.split("::")[0]
+    return _GROUP_OF_MODULE.get(module, module)
+
+
+def pytest_collection_modifyitems(config, items):
+    """The LONGEST_GROUPS first (the order within a group is kept); pyproject's --no-loadscope-reorder makes
+    pytest-xdist hand the groups out in this order."""
+    first = {group: k for k, group in enumerate(LONGEST_GROUPS)}
+    items.sort(key=lambda item: first.get(group_of(item.nodeid), len(first)))
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_xdist_make_scheduler(config, log):
+    """--dist loadfile with the GROUPS: a group's modules go to one worker. (--dist loadgroup's marks do not
+    reach the node ids under pytest 9, so the groups are made here, from the node ids the workers send.)"""
+    from xdist.scheduler import LoadScopeScheduling
+
+    class GroupScheduling(LoadScopeScheduling):
+        def _split_scope(self, nodeid: str) -> str:
+            return group_of(nodeid)
+
+    return GroupScheduling(config, log)

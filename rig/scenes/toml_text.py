@@ -14,7 +14,7 @@ from collections.abc import Mapping
 
 from rig.errors import ParameterError
 
-_BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
+_BARE_KEY = re.compile(r"[A-Za-z0-9_-]+")  # fullmatch: "$" would let a key end in "\n"
 _ESCAPES = {'"': '\\"', "\\": "\\\\", "\b": "\\b", "\t": "\\t", "\n": "\\n", "\f": "\\f", "\r": "\\r"}
 
 
@@ -27,7 +27,7 @@ def _string(text: str) -> str:
 def _key(name: object) -> str:
     if not isinstance(name, str) or not name:
         raise ParameterError("scene key", name, "a non-empty string")
-    return name if _BARE_KEY.match(name) else _string(name)
+    return name if _BARE_KEY.fullmatch(name) else _string(name)
 
 
 def _value(value: object, where: str) -> str:

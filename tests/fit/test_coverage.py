@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import pytest
 
+from rig.fit.data import Observations
 from rig.fit.forward import ForwardModel
 from rig.fit.parameters import parse_names
 from rig.fit.run import load_data
@@ -21,7 +22,12 @@ def study():
 
 
 def test_null_data_seeds(study, static_ratio_run):
-    obs = load_data(static_ratio_run / "reduced.csv")  # its scene's static_ratio 1.4 is the truth and in the model
+    """The run's points (l/a, c/a, loads, u, shared errors) with its static ratio left out of the model:
+    null data of the plain contact, as the benchmark draws them. Its Psi-node tables are then those of
+    tests/fit/test_goodness.py's and test_recovery.py's fits (same R_x, grid and table, Psi the only
+    effect): loaded from the session's cache folder, not built a second time with static_ratio 1.4."""
+    run = load_data(static_ratio_run / "reduced.csv")
+    obs = Observations(**{**run.__dict__, "fixed_effects": {}})
     mu = SMALL_STATIC_RATIO_RUN["mu"]
     truth = ForwardModel(obs, parse_names(["mu"]), {}).predict([mu])
     for seed in (1, 2):
