@@ -37,7 +37,6 @@ def pytest_sessionfinish(session, exitstatus):
         shutil.rmtree(SESSION_CACHE, ignore_errors=True)
 
 
-
 GROUPS = {
     "lab-server": ("tests/lab/test_lab_api.py", "tests/lab/test_lab_browser.py", "tests/lab/test_lab_browser_class.py",
                    "tests/lab/test_lab_browser_sheet.py", "tests/lab/test_lab_browser_stand_b.py",

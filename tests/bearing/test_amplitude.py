@@ -32,7 +32,7 @@ def b_inner(force: float) -> float:
 
 
 @pytest.mark.parametrize("assumption", list(SEED_NOTES_E1))
-def test_e1_amplitudes_per_assumption_match_seed_notes(assumption):
+def test_e1_amplitudes_per_assumption_match_the_equations_page(assumption):
     for case, expected in zip(TABLE_2, SEED_NOTES_E1[assumption]):
         theta = amplitude_for_stroke_ratio(FAG_7208, 1.0, b_inner(case.force_N), assumption)
         assert math.degrees(theta) == pytest.approx(expected, abs=0.006)

@@ -53,7 +53,7 @@ def test_acceptance_hertz_pressures_within_3_percent_of_table_2(case):
 
 
 @pytest.mark.parametrize(("force", "p_ir", "p_or", "b_ir", "a_ir", "b_or", "a_or"), SEED_NOTES)
-def test_contacts_match_seed_notes_arithmetic(force, p_ir, p_or, b_ir, a_ir, b_or, a_or):
+def test_contacts_match_the_equations_page_arithmetic(force, p_ir, p_or, b_ir, a_ir, b_or, a_or):
     inner = raceway_contact(FAG_7208, Ring.INNER, force)
     outer = raceway_contact(FAG_7208, Ring.OUTER, force)
     assert inner.p0 / 1e9 == pytest.approx(p_ir, abs=6e-4)

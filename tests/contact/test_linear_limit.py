@@ -51,7 +51,7 @@ def test_kinematic_at_large_alpha_approaches_linear_theory_with_the_same_signs(c
         assert getattr(grid, name) * scale == pytest.approx(getattr(lin, name) * scale, abs=0.04), name
 
 
-def test_longitudinal_force_decays_like_the_spin_formula_of_the_seed_notes():
+def test_longitudinal_force_decays_like_the_spin_formula_of_the_equations_page():
     """c = l = 0: nu_v alpha' -> 30 (1 - nu) C23 sqrt(b/a)/pi (Equations §1.7)."""
     for b in (1.0, 2.0):
         r = solve("kinematic", shape="ellipse", b_over_a=b, alpha=1e4, c_over_a=0.0, l_over_a=0.0, poisson=0.5, n=32)

@@ -87,7 +87,7 @@ def test_ideal_instruments_reproduce_the_truth_to_the_resolution(ideal, name):
     assert abs(error) <= resolution_bound(reduced, name) + slack, (name, error, resolution_bound(reduced, name))
 
 
-def test_l_is_within_the_counting_resolution_of_seed_notes_2(ideal):
+def test_l_is_within_the_counting_resolution_of_the_equations_page_2(ideal):
     # Equations §2: delta l = |dl/di_k| delta i_k with delta i_k = i_k (1/N1 + 1/N2) for +-1 count
     stand, outcome, _, reduced = ideal
     g = stand.params.geometry

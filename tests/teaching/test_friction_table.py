@@ -38,7 +38,7 @@ def _pair(value):
     return None if value is None else (value.low, value.high)
 
 
-def test_every_row_of_the_table_matches_the_seed_notes():
+def test_every_row_of_the_table_matches_the_equations_page():
     table = {(r.material_1, r.material_2): (_pair(r.dry), _pair(r.lubricated), _pair(r.wet)) for r in STATIC_TABLE}
     assert table == SEED_NOTES
 
