@@ -41,12 +41,14 @@ from rig.stands.base import Stand
 SETTLE_TRUTH = "operator_settle_time"
 """Truth entry the operator adds to every point: settle time [s]."""
 
-MAX_CHUNK = 512
-"""Most points in one chunk [1]: a shard of ~1 MB, a few seconds of a worker's time (the parent's
-cost of a shard, storing and merging it, is a few tens of ms whatever its size)."""
+MAX_CHUNK = 2048
+"""Most points in one chunk [1]: a shard of ~4 MB, about 10 s of a worker's time (a killed run loses
+at most that much per worker; the parent's cost of a shard, storing and merging it, is a few tens
+of ms whatever its size). Larger chunks pay the fixed cost of a chunk (MIN_TAIL_CHUNK) less often:
+a 10 000-point study on two workers ran 8 % faster with 2 048 than with 512 (docs/scaling.md)."""
 
-CHUNKS_PER_WORKER = 8
-"""Chunks per worker [1]: enough for the workers to share the points evenly to the end."""
+CHUNKS_PER_WORKER = 4
+"""Chunks per worker [1] before the last, shrinking ones (chunk_sizes) share out the rest."""
 
 
 def logged_truth(finished: PointResult) -> Mapping[str, Quantity]:
@@ -58,10 +60,10 @@ def logged_truth(finished: PointResult) -> Mapping[str, Quantity]:
     return quantities("truth", truth)
 
 
-MIN_TAIL_CHUNK = 32
+MIN_TAIL_CHUNK = 96
 """Fewest points in one of the last, shrinking chunks [1]: a chunk costs a worker about 0.1 s of
 CPU beyond its points (its shard written and read back, the reduction's set-up), as much as
-some 20 points of the default scene."""
+some 20 points of the default scene, so a chunk of the minimum spends about a sixth of its time on it."""
 
 
 def chunk_size(points: int, workers: int) -> int:

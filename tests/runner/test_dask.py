@@ -124,8 +124,8 @@ def test_batches_of_several_points_equal_one_job(scheduler, tmp_path, monkeypatc
 
 
 def test_chunk_size_shares_the_points_between_the_workers():
-    assert [rig.runner.chunks.chunk_size(n, 2) for n in (1, 16, 17, 1600, 100_000)] == [1, 1, 2, 100, 512]
-    assert rig.runner.chunks.chunk_size(5, 0) == 1
+    assert [rig.runner.chunks.chunk_size(n, 2) for n in (1, 16, 17, 1600, 100_000)] == [1, 2, 3, 200, 2048]
+    assert rig.runner.chunks.chunk_size(5, 0) == rig.runner.chunks.chunk_size(5, 1) == 2  # no workers: one
 
 
 def test_short_stand_a_scene_on_dask_equals_one_job(scheduler, tmp_path):
