@@ -45,7 +45,7 @@ MAX_CHUNK = 2048
 """Most points in one chunk [1]: a shard of ~4 MB, about 10 s of a worker's time (a killed run loses
 at most that much per worker; the parent's cost of a shard, storing and merging it, is a few tens
 of ms whatever its size). Larger chunks pay the fixed cost of a chunk (MIN_TAIL_CHUNK) less often:
-a 10 000-point study on two workers ran 8 % faster with 2 048 than with 512 (docs/scaling.md)."""
+a 10 000-point study on two workers ran about 6 % faster with 2 048 than with 512 (docs/scaling.md)."""
 
 CHUNKS_PER_WORKER = 4
 """Chunks per worker [1] before the last, shrinking ones (chunk_sizes) share out the rest."""
