@@ -9,10 +9,11 @@ The scene goes to the workers once (scattered); one task is a chunk of consecuti
 (rig.runner.chunks: simulated, logged as a shard and reduced on the worker; about 4 chunks per
 worker thread, at most 2 048 points each, then shrinking ones), so that a study of 10^5 points is
 tens to hundreds of tasks (more workers, more chunks), not 10^5 tasks each carrying the scene (the
-scheduler's cost grows with the tasks). A worker thread builds its stand from the scene and calibrates it once per run (a pure function of the run
-seed by the contract, so every worker holds the records the serial run holds), then keeps it for
-the run's further points. Stands are kept per (run, worker thread) - a worker with several threads
-never shares one stand between two points at once - for the last MAX_CACHED_RUNS runs only.
+scheduler's cost grows with the tasks). A worker thread builds its stand from the scene and
+calibrates it once per run (a pure function of the run seed by the contract, so every worker holds
+the records the serial run holds), then keeps it for the run's further points. Stands are kept per
+(run, worker thread) - a worker with several threads never shares one stand between two points at
+once - for the last MAX_CACHED_RUNS runs only.
 
 dask and distributed are the optional extra ``dask``: they are imported when a sweep is sent to
 a scheduler, never on import of rig; without them, a ParameterError names the extra and the
