@@ -239,7 +239,9 @@ def run(scene: Scene | str | Path, folder: str | Path, *, jobs: int = 1, schedul
     folder : str or pathlib.Path
         The output folder (created if needed): log.h5, reduced.csv, figures, summary.txt.
     jobs : int, optional
-        Worker processes for a stand scene's points (default 1); results do not depend on it.
+        Worker processes for a stand scene's points (default 1); results do not depend on it. Each
+        worker starts by importing the calling script, so a script with ``jobs`` > 1 keeps its run
+        under ``if __name__ == "__main__":``.
     scheduler : str, optional
         Address of a Dask scheduler to run the points on (extra ``dask``; with ``jobs=1``).
     progress : bool, optional

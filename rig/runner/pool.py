@@ -110,7 +110,9 @@ def run_pool_tasks(scene: StandScene, make_tasks: Callable[[int], Sequence], job
                 result = futures.popleft().result()
             except BrokenProcessPool as error:  # a worker died, e.g. the stand failed to build or calibrate
                 raise WorkerError(f"a worker process of the pool failed ({error}); run with --jobs 1 to see the "
-                                  "error of the stand") from None
+                                  "error of the stand, and from a Python script put the run under "
+                                  "`if __name__ == \"__main__\":` (each worker process starts by importing the "
+                                  "script)") from None
             if deliver(result):
                 break
     finally:

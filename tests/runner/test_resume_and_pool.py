@@ -98,3 +98,18 @@ def test_a_named_error_inside_a_point_arrives_whole_and_removes_the_staging_fold
     assert raised.value.name == "load_N" and raised.value.value == 950.0
     assert str(raised.value) == "load_N = 950.0 is not valid; valid: at most 900 N (the fake stand's stall)"
     assert not staging_dir(tmp_path / "log.h5").exists() and not (tmp_path / "log.h5").exists()
+
+
+def test_a_script_without_a_main_guard_gets_a_worker_error_that_names_the_guard(tmp_path):
+    """Each worker of the pool starts by importing the calling script (spawn): a script that runs its
+    study on import makes every worker fail. The run stops with a WorkerError that says what to do,
+    instead of hanging or blaming the stand."""
+    import subprocess
+    import sys
+
+    script = tmp_path / "study.py"
+    script.write_text('import rig\nrig.run("default", "out", jobs=2)\n')
+    done = subprocess.run([sys.executable, str(script)], cwd=tmp_path, capture_output=True, text=True, timeout=240)
+    assert done.returncode != 0
+    last = done.stderr.strip().splitlines()[-1]
+    assert last.startswith("rig.runner.pool.WorkerError") and 'if __name__ == "__main__":' in last, done.stderr[-2000:]
