@@ -111,13 +111,7 @@ def stand_a_dynamometer(
     Dynamometer
         Force [N] in, converter reading [V] out.
     """
-    noise, drift = _effects(noise_rng, drift_rng)
-    return Dynamometer(
-        strain_per_newton=STAND_A_STRAIN_PER_NEWTON,
-        bridge=Bridge(BridgeConfiguration.FULL),
-        amplifier=Amplifier(STAND_A_GAIN, noise=noise, drift=drift),
-        adc=Adc(),
-    )
+    return _full_bridge_dynamometer(STAND_A_STRAIN_PER_NEWTON, STAND_A_GAIN, noise_rng, drift_rng)
 
 
 def stand_b_dynamometer(
@@ -135,10 +129,16 @@ def stand_b_dynamometer(
     Dynamometer
         Force [N] in, converter reading [V] out.
     """
+    return _full_bridge_dynamometer(STAND_B_STRAIN_PER_NEWTON, STAND_B_GAIN, noise_rng, drift_rng)
+
+
+def _full_bridge_dynamometer(strain_per_newton: float, gain: float, noise_rng: np.random.Generator | None,
+                             drift_rng: np.random.Generator | None) -> Dynamometer:
+    """A full-bridge dynamometer with the default converter and the amplifier's effects of _effects."""
     noise, drift = _effects(noise_rng, drift_rng)
     return Dynamometer(
-        strain_per_newton=STAND_B_STRAIN_PER_NEWTON,
+        strain_per_newton=strain_per_newton,
         bridge=Bridge(BridgeConfiguration.FULL),
-        amplifier=Amplifier(STAND_B_GAIN, noise=noise, drift=drift),
+        amplifier=Amplifier(gain, noise=noise, drift=drift),
         adc=Adc(),
     )

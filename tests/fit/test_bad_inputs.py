@@ -72,27 +72,33 @@ def test_grid_is_checked_before_the_data_is_read(tmp_path):
     assert info.value.name == "n" and "[4, 512]" in info.value.valid
 
 
-def test_no_finite_rolling_point_is_named(static_ratio_run, tmp_path):
-    folder = tmp_path / "run"
+def _edited_copy(run, folder, edit):
+    """``run``'s log.h5 and its reduced.csv changed by ``edit(table)`` in ``folder``; the csv's path."""
     folder.mkdir()
-    shutil.copy(static_ratio_run / "log.h5", folder / "log.h5")
-    table = pd.read_csv(static_ratio_run / "reduced.csv")
-    table["l_over_a"] = float("nan")
+    shutil.copy(run / "log.h5", folder / "log.h5")
+    table = pd.read_csv(run / "reduced.csv")
+    edit(table)
     table.to_csv(folder / "reduced.csv", index=False)
+    return folder / "reduced.csv"
+
+
+def test_no_finite_rolling_point_is_named(static_ratio_run, tmp_path):
+    def no_rolling_point(table):
+        table["l_over_a"] = float("nan")
+
+    data = _edited_copy(static_ratio_run, tmp_path / "run", no_rolling_point)
     with pytest.raises(ParameterError) as info:
-        fit_data(folder / "reduced.csv", ["mu", "psi"])
+        fit_data(data, ["mu", "psi"])
     assert info.value.name == "DATA" and "finite l_over_a" in info.value.valid
 
 
 def test_points_not_in_the_log_are_named(static_ratio_run, tmp_path):
-    folder = tmp_path / "run"
-    folder.mkdir()
-    shutil.copy(static_ratio_run / "log.h5", folder / "log.h5")
-    table = pd.read_csv(static_ratio_run / "reduced.csv")
-    table.loc[0, "point"] = 999
-    table.to_csv(folder / "reduced.csv", index=False)
+    def foreign_point(table):
+        table.loc[0, "point"] = 999
+
+    data = _edited_copy(static_ratio_run, tmp_path / "run", foreign_point)
     with pytest.raises(ParameterError) as info:
-        fit_data(folder / "reduced.csv", ["mu"])
+        fit_data(data, ["mu"])
     assert info.value.name == "DATA point" and "not from this log" in info.value.valid
 
 

@@ -6,6 +6,8 @@ logs are compared by content (records, truth, metadata but the start time) and r
 
 from __future__ import annotations
 
+import subprocess
+import sys
 from unittest import mock
 
 import pytest
@@ -104,9 +106,6 @@ def test_a_script_without_a_main_guard_gets_a_worker_error_that_names_the_guard(
     """Each worker of the pool starts by importing the calling script (spawn): a script that runs its
     study on import makes every worker fail. The run stops with a WorkerError that says what to do,
     instead of hanging or blaming the stand."""
-    import subprocess
-    import sys
-
     script = tmp_path / "study.py"
     script.write_text('import rig\nrig.run("default", "out", jobs=2)\n')
     done = subprocess.run([sys.executable, str(script)], cwd=tmp_path, capture_output=True, text=True, timeout=240)
