@@ -103,6 +103,32 @@ def test_expanded_uncertainty_of_single_inputs_has_the_textbook_coverage_factors
         assert expanded_uncertainty(propagation)[0] == pytest.approx(k95 * 0.4, rel=0.015), kind
 
 
+def _propagation(outputs: int) -> Propagation:
+    kinds = (Distribution.NORMAL, Distribution.RECTANGULAR, Distribution.TRIANGULAR)
+    inputs = InputSet(tuple(InputQuantity(f"x{i}", 1.0, 0.1 * (i + 1), "1", "test", kind)
+                            for i, kind in enumerate(kinds)))
+    jacobian = np.arange(1.0, 1.0 + 3 * outputs).reshape(outputs, 3) / (7.0 + outputs)
+    return Propagation(inputs, tuple(f"y{k}" for k in range(outputs)), np.zeros(outputs), jacobian,
+                       jacobian @ np.diag(np.square(inputs.uncertainties)) @ jacobian.T)
+
+
+def test_expanded_uncertainty_is_the_same_whatever_ran_before_it_in_the_thread_or_beside_it():
+    # the Monte-Carlo product and the quantile's mask live in per-thread buffers reused between calls
+    # (rig.reduction.coverage._reused_array): a larger, a smaller and a concurrent call must not leak into a result
+    import concurrent.futures
+
+    small, large = _propagation(2), _propagation(12)
+    first = expanded_uncertainty(small)
+    big = expanded_uncertainty(large)
+    np.testing.assert_array_equal(expanded_uncertainty(small), first)
+    np.testing.assert_array_equal(expanded_uncertainty(large), big)
+    np.testing.assert_array_equal(big[:2] != first, True)  # different outputs: a stale buffer would show
+    with concurrent.futures.ThreadPoolExecutor(4) as pool:
+        results = list(pool.map(lambda p: expanded_uncertainty(p), [small, large] * 32))
+    for k, result in enumerate(results):
+        np.testing.assert_array_equal(result, first if k % 2 == 0 else big)
+
+
 def test_triangular_draws_have_the_stated_u():
     inputs = InputSet((InputQuantity("N1", 4800.0, COUNT_QUANTISATION_STD, "1", "counter", Distribution.TRIANGULAR),))
     draws = draw_inputs(inputs, 200_000, np.random.default_rng(3))[:, 0] - 4800.0
