@@ -14,7 +14,6 @@ from dataclasses import dataclass
 from functools import cached_property, lru_cache
 
 import numpy as np
-from scipy import spatial
 
 from rig import validate
 
@@ -198,7 +197,9 @@ def _cell_pressure(shape, b, x, y, hx, hy, active) -> np.ndarray:
     centres = np.column_stack([c[active] for c in np.meshgrid(x, y, indexing="ij")])
     # the two nearest centres; a sub-point as near to both (the lattice makes ties) goes half to each,
     # which keeps the loads as symmetric as the contact (negative spin is solved as the mirror image)
-    distance, nearest = spatial.cKDTree(centres).query(np.column_stack([xs[loaded], ys[loaded]]), k=2)
+    from scipy.spatial import cKDTree  # here: scipy.spatial (and scipy.sparse) cost ~0.5 s to import
+
+    distance, nearest = cKDTree(centres).query(np.column_stack([xs[loaded], ys[loaded]]), k=2)
     half = 0.5 * (distance[:, 1] - distance[:, 0] <= 1e-9 * (hx + hy))
     weights = ps[loaded] / _RIM_SUBSAMPLES**2
     for k, share in ((0, 1.0 - half), (1, half)):

@@ -11,10 +11,15 @@ from __future__ import annotations
 
 import importlib
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from rig import validate
 from rig.errors import ParameterError
-from rig.scenes import CharacteristicsScene, OscillationScene, Scene
+from rig.scenes.stand_scene import StandScene
+
+if TYPE_CHECKING:
+    from rig.runner.stand_run import RunReport
+    from rig.scenes import Scene
 
 _LAZY = {
     "LOG_NAME": "rig.runner.stand_run",
@@ -48,18 +53,21 @@ def run_scene(scene: Scene, out_dir: Path, *, jobs: int = 1, scheduler: str | No
     from rig.runner.stand_run import MAX_JOBS, run_stand_scene
 
     jobs = validate.integer("jobs", jobs, 1, MAX_JOBS)
-    if scheduler is not None and isinstance(scene, (CharacteristicsScene, OscillationScene)):
+    if isinstance(scene, StandScene):
+        return run_stand_scene(scene, out_dir, jobs=jobs, scheduler=scheduler, progress=progress)
+    if scheduler is not None:
         raise ParameterError("scheduler", scheduler, "None for a contact-characteristics or oscillation scene "
                              "(only a stand scene's points run on a Dask cluster)")
+    # the other kinds' modules (the contact solver, the bearing) are imported only for those scenes
+    from rig.scenes.characteristics_scene import CharacteristicsScene
+
     if isinstance(scene, CharacteristicsScene):
         from rig.runner.characteristics_run import run_characteristics_scene
 
         return run_characteristics_scene(scene, out_dir, progress=progress)
-    if isinstance(scene, OscillationScene):
-        from rig.runner.oscillation_run import run_oscillation_scene
+    from rig.runner.oscillation_run import run_oscillation_scene
 
-        return run_oscillation_scene(scene, out_dir, progress=progress)
-    return run_stand_scene(scene, out_dir, jobs=jobs, scheduler=scheduler, progress=progress)
+    return run_oscillation_scene(scene, out_dir, progress=progress)
 
 
 __all__ = [

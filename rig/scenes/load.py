@@ -11,15 +11,30 @@ from __future__ import annotations
 import enum
 import tomllib
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from rig.errors import ParameterError
 from rig.scenes import tables as T
-from rig.scenes.characteristics_scene import CharacteristicsScene, parse_characteristics_scene
 from rig.scenes.locate import resolve_scene
-from rig.scenes.oscillation_scene import OscillationScene, parse_oscillation_scene
 from rig.scenes.stand_scene import StandScene, parse_stand_scene
 
-Scene = StandScene | CharacteristicsScene | OscillationScene
+if TYPE_CHECKING:
+    from rig.scenes.characteristics_scene import CharacteristicsScene
+    from rig.scenes.oscillation_scene import OscillationScene
+
+    Scene = StandScene | CharacteristicsScene | OscillationScene
+
+
+def __getattr__(name: str):
+    """``Scene``, the union of the three kinds, made on first use (PEP 562): the characteristics and
+    oscillation kinds' modules (the contact solver, the bearing) are imported only when needed."""
+    if name != "Scene":
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    from rig.scenes.characteristics_scene import CharacteristicsScene
+    from rig.scenes.oscillation_scene import OscillationScene
+
+    globals()["Scene"] = union = StandScene | CharacteristicsScene | OscillationScene
+    return union
 
 
 class SceneKind(enum.Enum):
@@ -62,8 +77,12 @@ def parse_scene(text: str, *, name: str, source: str = "<text>", stand_class_of=
                              "a TOML scene document with at least a [scene] table")
     kind = scene_kind(document)
     if kind is SceneKind.CHARACTERISTICS:
+        from rig.scenes.characteristics_scene import parse_characteristics_scene
+
         return parse_characteristics_scene(document, name=name, source=source, text=text)
     if kind is SceneKind.OSCILLATION:
+        from rig.scenes.oscillation_scene import parse_oscillation_scene
+
         return parse_oscillation_scene(document, name=name, source=source, text=text)
     return parse_stand_scene(document, name=name, source=source, text=text, stand_class_of=stand_class_of)
 
