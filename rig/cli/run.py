@@ -10,7 +10,7 @@ are the same either way. Exit status: 0 every point done, 1 some points did not 
 summary.txt), 2 bad input or another error (printed by rig.cli.main; among them a folder another
 run holds), 3 some points of the log were damaged (reduced to NaN, named in summary.txt), 4 a twin
 run's reduced points are off their truth by more than their stated u allows (named first in
-summary.txt, ``off_truth`` in reduced.csv; rig.runner.summary).
+summary.txt, ``off_truth`` in reduced.csv; rig.runner.off_truth).
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ from pathlib import Path
 
 from rig.cli.reduce import DAMAGED_STATUS
 from rig.runner import run_scene
-from rig.runner.summary import OFF_TRUTH_STATUS
+from rig.runner.off_truth import OFF_TRUTH_STATUS
 from rig.scenes import load_scene
 
 DEFAULT_SCENE = "default"

@@ -7,9 +7,9 @@ writes the finished points as a shard (rig.logbook.shards: a complete columnar l
 in a temporary file of the worker's machine) and reduces that shard with the stand's own
 ``reduce_log`` (the reduction of a point depends only on that point's record, so a chunk's rows are
 the rows the whole log's reduction gives). It returns a :class:`ChunkResult`: the shard's bytes, the
-reduced rows, the points that did not settle, an error. The parent only stores the shard, keeps the
-rows and, at the end, merges the shards into ``log.h5``: its work per point is a few copies, not a
-simulation or a reduction. A task may also be the reduction of a shard an interrupted run left
+reduced rows (also as lines of reduced.csv), the points that did not settle, an error. The parent
+only stores the shard, keeps the rows and, at the end, merges the shards into ``log.h5``: its work
+per point is a few copies, not a simulation, a reduction or the formatting of numbers. A task may also be the reduction of a shard an interrupted run left
 (:class:`ReduceTask`), so that a resumed run reduces those points on the workers too.
 
 Each point's truth gets one entry from the operator: ``operator_settle_time`` [s], the simulated
@@ -111,7 +111,9 @@ class ChunkResult:
     error: a point raised (the chunk ends there); shard: the shard file's bytes (None: no point
     written, or a ReduceTask) and columns, its per-point columns (rig.logbook.shards.read_columns,
     read here so that the parent's merge need not); table: the reduced rows (None when not
-    reduced); cpu_s: the worker's CPU time for the task [s].
+    reduced), with each point's ``z_max`` (rig.runner.off_truth.with_z_max); cpu_s: the worker's
+    CPU time for the task [s]; rows: those rows as lines of reduced.csv
+    (rig.runner.reduction.csv_rows), formatted here so that the parent need not.
     """
 
     first: int
@@ -123,6 +125,7 @@ class ChunkResult:
     table: pd.DataFrame | None
     cpu_s: float
     columns: LogColumns | None = None
+    rows: str | None = None
 
 
 def run_task(stand: Stand, scene: StandScene, task: SimulateTask | ReduceTask) -> ChunkResult:
@@ -131,8 +134,8 @@ def run_task(stand: Stand, scene: StandScene, task: SimulateTask | ReduceTask) -
     if isinstance(task, ReduceTask):
         with _scratch() as path:
             path.write_bytes(task.data)
-            table = _reduce(stand, scene, path)
-        return ChunkResult(task.first, (), (), False, None, None, table, time.process_time() - start)
+            table, rows = _reduce(stand, scene, path)
+        return ChunkResult(task.first, (), (), False, None, None, table, time.process_time() - start, rows=rows)
     finished: list[PointResult] = []
     error = None
     try:
@@ -152,14 +155,15 @@ def run_task(stand: Stand, scene: StandScene, task: SimulateTask | ReduceTask) -
             error = PointFailure.of(result.point, raised)
             break
     stopped = error is None and _stops(scene) and bool(finished) and finished[-1].outcome is None
-    shard = table = columns = None
+    shard = table = columns = rows = None
     if entries:  # the points before an error too: a rerun resumes after them
         with _scratch() as path:
             write_shard(path, task.metadata, entries)
-            table = _reduce(stand, scene, path) if task.reduce and error is None else None
+            if task.reduce and error is None:
+                table, rows = _reduce(stand, scene, path)
             shard, columns = path.read_bytes(), read_columns(path)
     return ChunkResult(task.points[0].index, tuple(e.index for e in entries), tuple(failures), stopped, error,
-                       shard, table, time.process_time() - start, columns)
+                       shard, table, time.process_time() - start, columns, rows)
 
 
 def failed(task: SimulateTask | ReduceTask, error: Exception) -> ChunkResult:
@@ -173,10 +177,13 @@ def _stops(scene: StandScene) -> bool:
     return scene.procedure.on_settle_timeout is TimeoutPolicy.STOP
 
 
-def _reduce(stand: Stand, scene: StandScene, path: Path) -> pd.DataFrame:
-    from rig.runner.reduction import reduce_table
+def _reduce(stand: Stand, scene: StandScene, path: Path) -> tuple[pd.DataFrame, str | None]:
+    """The shard's reduced table with each point's z_max, and its rows as lines of reduced.csv."""
+    from rig.runner.off_truth import with_z_max
+    from rig.runner.reduction import csv_rows, reduce_table
 
-    return reduce_table(stand, path, scene.contact)
+    table = with_z_max(reduce_table(stand, path, scene.contact))
+    return table, csv_rows(table)
 
 
 class _scratch:

@@ -28,6 +28,10 @@ from rig.logbook.atomic import fsync_dir, fsync_file, write_error
 from rig.scenes.stand_scene import PAPER_FIGURE_NAMES
 
 STAGING_NAME = ".outputs.tmp"
+REDUCED_ROWS_NAME = ".reduced_rows.part"
+"""reduced.csv's lines as a study's workers formatted them, gathered in point order while the study
+runs (rig.runner.reduction.csv_rows); removed when reduced.csv is written and by the next run in
+the folder (an interrupted run's is of no use)."""
 SUMMARY_NAME = "summary.txt"
 REDUCED_CSV = "reduced.csv"
 REDUCED_FIGURE = "reduced_vs_truth.png"

@@ -14,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 
 from rig.errors import LogFormatError, ParameterError, RigError
@@ -23,7 +24,7 @@ from rig.logbook.truth import read_truth
 from rig.logbook.units import DIMENSIONLESS
 from rig.reduction.table import DAMAGED
 from rig.runner.outputs import REDUCED_CSV
-from rig.runner.summary import with_off_truth
+from rig.runner.off_truth import with_off_truth
 from rig.stands.base import ContactSpec, Stand
 
 TRUTH_SOURCES = {
@@ -126,19 +127,43 @@ def gathered_table(tables: list[pd.DataFrame | None]) -> pd.DataFrame | None:
     return table
 
 
+CSV_LINE_END = "\n"
+"""The line end of reduced.csv, on every system (the rows formatted on workers are joined with it)."""
+
+
+@dataclass(frozen=True)
+class FormattedRows:
+    """A file of reduced.csv's lines (csv_rows) of a table with ``columns``, in point order."""
+
+    path: Path
+    columns: tuple[str, ...]
+
+
+def csv_rows(table: pd.DataFrame) -> str | None:
+    """``table``'s rows as lines of reduced.csv (the header left out), formatted where the table was
+    reduced - a chunk's on its worker: pandas formats each value on its own, so the lines of the
+    chunks one after the other are the lines of the whole table. None when a value holds a line
+    break (then a line is not a row)."""
+    text = table.to_csv(header=False, index=True, lineterminator=CSV_LINE_END)
+    return text if text.count(CSV_LINE_END) == len(table) else None
+
+
 def reduce_to_files(stand: Stand, log_path: Path, contact: ContactSpec, out_dir: Path) -> Reduction:
     """Reduce ``log_path`` with ``stand``; write ``out_dir/reduced.csv`` and ``/reduced`` into the log."""
     return table_to_files(reduce_table(stand, log_path, contact), log_path, out_dir)
 
 
-def table_to_files(table: pd.DataFrame, log_path: Path, out_dir: Path) -> Reduction:
+def table_to_files(table: pd.DataFrame, log_path: Path, out_dir: Path, rows: FormattedRows | None = None
+                   ) -> Reduction:
     """Write a reduced table of ``log_path`` as ``out_dir/reduced.csv`` and as ``/reduced`` into the log,
-    with the twin's off-truth flags (rig.runner.summary.with_off_truth) taken over the whole run."""
+    with the twin's off-truth flags (rig.runner.off_truth.with_off_truth) taken over the whole run.
+    ``rows``: the table's rows as csv_rows formatted them on the workers (every column up to
+    ``z_max``), in the table's order; reduced.csv is then those lines with the flags added, not
+    formatted again."""
     table = with_off_truth(table)
     damaged = damaged_points(table)
     notes = tuple(table.attrs.get("notes", ()))
-    csv = out_dir / REDUCED_CSV
-    table.to_csv(csv, index=True, index_label=table.index.name or "point")
+    csv = write_csv(table, out_dir / REDUCED_CSV, rows)
     try:
         write_reduced(log_path, table)
     except (ParameterError, OSError) as error:  # e.g. a read-only log: reported; reduced.csv holds the table
@@ -146,3 +171,37 @@ def table_to_files(table: pd.DataFrame, log_path: Path, out_dir: Path) -> Reduct
             raise  # a full disk: the run stops with that error
         return Reduction(table, csv, False, f"reduced table not stored in {log_path.name}: {error}", damaged, notes)
     return Reduction(table, csv, True, None, damaged, notes)
+
+
+def write_csv(table: pd.DataFrame, csv: Path, rows: FormattedRows | None = None) -> Path:
+    """Write the (flagged) reduced ``table`` as ``csv``: the table's to_csv, or - when ``rows`` holds its
+    lines as the workers formatted them - those lines with the ``off_truth`` flags added, the same bytes."""
+    if rows is None or not _csv_from_rows(table, rows, csv):
+        table.to_csv(csv, index=True, index_label=_index_label(table), lineterminator=CSV_LINE_END)
+    return csv
+
+
+def _index_label(table: pd.DataFrame) -> str:
+    return table.index.name or "point"
+
+
+def _csv_from_rows(table: pd.DataFrame, rows: FormattedRows, csv: Path) -> bool:
+    """Write ``csv`` as table.to_csv would, from the lines of ``rows`` (every column but ``off_truth``,
+    added here: its threshold is the whole run's); False when those lines are not of the table's
+    columns or not one per row."""
+    flags = None
+    if list(table.columns) != [*rows.columns, *(["off_truth"] if "off_truth" in table else [])]:
+        return False
+    if "off_truth" in table:  # a float column: each value as to_csv writes it (astype(str), NaN empty)
+        values = table["off_truth"].to_numpy(dtype=float)
+        flags = [flag.encode() for flag in np.where(np.isnan(values), "", values.astype(str)).tolist()]
+    header = table.iloc[:0].to_csv(index=True, index_label=_index_label(table), lineterminator=CSV_LINE_END)
+    count = 0
+    with open(rows.path, "rb") as source, open(csv, "wb") as out:  # binary: lines end at "\n" only
+        out.write(header.encode())
+        for line in source:
+            if count == len(table):
+                return False
+            out.write(line if flags is None else line[:-1] + b"," + flags[count] + b"\n")
+            count += 1
+    return count == len(table)

@@ -40,11 +40,13 @@ from rig.logbook.writer import RUN_PART, same_run
 from rig.runner.dask_pool import check_scheduler
 from rig.runner.figures import reduced_vs_truth_figure
 from rig.runner.folder_lock import folder_lock
-from rig.runner.outputs import (REDUCED_FIGURE, STAND_KIND, SUMMARY_NAME, claim_folder, output_folder, remove_stale,
-                                staged_outputs)
+from rig.runner.outputs import (REDUCED_FIGURE, REDUCED_ROWS_NAME, STAND_KIND, SUMMARY_NAME, claim_folder,
+                                output_folder, remove_stale, staged_outputs)
 from rig.runner.pool import WorkerError
-from rig.runner.reduction import Reduction, gathered_table, read_truth_if_any, reduce_to_files, table_to_files
-from rig.runner.summary import RunFacts, off_truth_points, summary_text
+from rig.runner.reduction import (FormattedRows, Reduction, gathered_table, read_truth_if_any, reduce_to_files,
+                                  table_to_files)
+from rig.runner.off_truth import off_truth_points
+from rig.runner.summary import RunFacts, summary_text
 from rig.runner.chunks import SETTLE_TRUTH
 from rig.runner.sweep import Failure, ShardedSweep, run_sharded_sweep, run_sweep
 from rig.scenes.procedure import PlannedPoint
@@ -59,7 +61,7 @@ MAX_JOBS = 256
 class RunReport:
     """What a run wrote: the folder, the files (names), points planned / in the log / resumed,
     the failures, whether it stopped early, the summary text, the damaged points of the log and the
-    reduced points off their truth (rig.runner.summary.with_off_truth; twin runs)."""
+    reduced points off their truth (rig.runner.off_truth; twin runs)."""
 
     out_dir: Path
     files: tuple[str, ...]
@@ -94,7 +96,12 @@ def run_stand_scene(scene: StandScene, out_dir: Path, *, jobs: int = 1, schedule
     out_dir = output_folder(out_dir)
     with folder_lock(out_dir, f"rig run {scene.name}"):
         claim_folder(out_dir, STAND_KIND)  # a characteristics or oscillation run's folder is refused
-        return _run_locked(scene, out_dir, jobs, scheduler, progress)
+        rows = out_dir / REDUCED_ROWS_NAME
+        rows.unlink(missing_ok=True)  # an interrupted run's
+        try:
+            return _run_locked(scene, out_dir, jobs, scheduler, progress)
+        finally:
+            rows.unlink(missing_ok=True)
 
 
 def _run_locked(scene: StandScene, out_dir: Path, jobs: int, scheduler: str | None, progress: bool | None) -> RunReport:
@@ -119,7 +126,8 @@ def _run_locked(scene: StandScene, out_dir: Path, jobs: int, scheduler: str | No
     try:
         if sharded:
             sweep = run_sharded_sweep(scene, stand, todo, earlier, folder, writer.metadata, jobs=jobs,
-                                      progress=progress, scheduler=scheduler)
+                                      progress=progress, scheduler=scheduler,
+                                      rows=None if writer.done else out_dir / REDUCED_ROWS_NAME)
         else:
             if todo:
                 stand.calibrate(scene.seed)
@@ -138,7 +146,8 @@ def _run_locked(scene: StandScene, out_dir: Path, jobs: int, scheduler: str | No
     gathered = [table]  # handed over, not kept here: the parent's memory holds one reduced table at a time
     del table
     with staged_outputs(out_dir) as staging:
-        files, text, reduction = _write_outputs(scene, stand, log_path, facts, staging, gathered, plan)
+        files, text, reduction = _write_outputs(scene, stand, log_path, facts, staging, gathered, plan,
+                                                sweep.rows if sharded else None)
     return RunReport(out_dir, tuple(files), len(plan), facts.resumed + facts.written_now, facts.resumed,
                      tuple(sweep.failures), sweep.stopped, text, () if reduction is None else reduction.damaged,
                      () if reduction is None else off_truth_points(reduction.table))
@@ -194,13 +203,13 @@ def _finalize(writer: LogWriter, log_path: Path, earlier: list[Shard], sweep: Sh
 
 
 def _write_outputs(scene: StandScene, stand: Stand, log_path: Path, facts: RunFacts, staging: Path,
-                   gathered: list[pd.DataFrame | None], plan: Sequence[PlannedPoint]
+                   gathered: list[pd.DataFrame | None], plan: Sequence[PlannedPoint], rows: FormattedRows | None
                    ) -> tuple[list[str], str, Reduction | None]:
     """Reduce the finalized log (unless ``gathered`` holds its reduced table gathered from the
     workers: taken out of the list, so that only the table with the off-truth flags stays in
-    memory), draw the figures of the ``plan``'s points and write summary.txt into ``staging``;
-    returns the names of the run's files, the summary text and the reduction (None when not
-    reduced)."""
+    memory; ``rows``: its rows as the workers formatted them), draw the figures of the ``plan``'s
+    points and write summary.txt into ``staging``; returns the names of the run's files, the
+    summary text and the reduction (None when not reduced)."""
     files, problems = [LOG_NAME], []
     reduction: Reduction | None = None
     empty = not point_indices(log_path)
@@ -208,7 +217,7 @@ def _write_outputs(scene: StandScene, stand: Stand, log_path: Path, facts: RunFa
         problems.append("not reduced: the log holds no operating point (every point failed)")
     if scene.outputs.reduce and not empty:
         if gathered and gathered[-1] is not None:  # popped into the call: no name here keeps the table
-            reduction = table_to_files(gathered.pop(), log_path, staging)
+            reduction = table_to_files(gathered.pop(), log_path, staging, rows)
         else:
             reduction = reduce_to_files(stand, log_path, scene.contact, staging)
         files.append(reduction.csv.name)

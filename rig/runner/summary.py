@@ -4,14 +4,7 @@ Agreement is stated in units of the stated standard uncertainty: z = |reduced - 
 point, for every quantity whose table has the value, ``u_<name>`` and ``true_<name>``. Points
 whose value is NaN (not reducible, with a reason) or whose u is not positive are counted apart.
 
-Off its truth: in a twin run (the log has a truth group) a point whose largest z exceeds the
-run's threshold is flagged - a wrong root of eqs. (33)-(35) or a budget that misses an error
-cannot pass silently. The threshold is z = 3, raised for many comparisons so that a run whose
-every u is right is flagged by chance in at most OFF_TRUTH_FAMILY of runs (Bonferroni over the m
-comparisons of the run, normal z: Phi^-1(1 - OFF_TRUTH_FAMILY/(2 m)); 3.9 for m = 100).
-:func:`with_off_truth` adds the columns ``z_max`` (the point's largest z [1]) and ``off_truth``
-(1 flagged, 0 not, NaN not comparable) to the reduced table; ``rig run`` exits with
-OFF_TRUTH_STATUS when a point is flagged (docs/scenes.md, "Exit status and errors").
+Points off their truth (rig.runner.off_truth) are named first, in a warning, and counted.
 """
 
 from __future__ import annotations
@@ -21,84 +14,10 @@ from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
-from scipy.special import ndtri
 
+from rig.runner.off_truth import OFF_TRUTH_Z, QUANTITIES, off_truth_lines, off_truth_points
 from rig.runner.sweep import Failure
 from rig.scenes.stand_scene import StandScene
-
-QUANTITIES = ("l_over_a", "c_over_a", "mu_v", "mu_T")
-OFF_TRUTH_Z = 3.0  # the smallest threshold of |reduced - true|/u that flags a point [1]
-OFF_TRUTH_FAMILY = 0.01  # chance that a run with right u's is flagged at all [1]
-OFF_TRUTH_STATUS = 4  # rig run's exit status when a reduced point is off its truth
-
-
-def z_table(table: pd.DataFrame) -> pd.DataFrame:
-    """z = |reduced - true|/u per point (rows) and quantity (columns) [1]; NaN where not comparable
-    (NaN value, truth or u, or u <= 0)."""
-    out = {}
-    for name in QUANTITIES:
-        if not {name, f"u_{name}", f"true_{name}"} <= set(table.columns):
-            continue
-        value, u, true = (table[c].to_numpy(dtype=float) for c in (name, f"u_{name}", f"true_{name}"))
-        with np.errstate(invalid="ignore", divide="ignore"):
-            z = np.abs(value - true) / u
-        out[name] = np.where(np.isfinite(z) & (u > 0), z, np.nan)
-    return pd.DataFrame(out, index=table.index)
-
-
-def off_truth_threshold(comparisons: int) -> float:
-    """The z that flags a point [1] for a run with ``comparisons`` finite z (module docstring)."""
-    if comparisons <= 0:
-        return OFF_TRUTH_Z
-    # Phi^-1(1 - q) = -ndtri(q), what scipy.stats.norm.isf(q) computes, without importing scipy.stats
-    # (about 0.7 s of CPU: a third of the parent's fixed cost in a run on workers)
-    return max(OFF_TRUTH_Z, float(-ndtri(OFF_TRUTH_FAMILY / (2.0 * comparisons))))
-
-
-def with_off_truth(table: pd.DataFrame) -> pd.DataFrame:
-    """``table`` with ``z_max`` and ``off_truth`` when it has truth columns (unchanged otherwise);
-    the threshold goes to ``table.attrs["off_truth_z"]``."""
-    zs = z_table(table)
-    if zs.empty or zs.shape[1] == 0:
-        return table
-    table = table.copy()
-    finite = np.isfinite(zs.to_numpy())
-    threshold = off_truth_threshold(int(finite.sum()))
-    z_max = zs.max(axis=1, skipna=True).to_numpy(dtype=float)
-    table["z_max"] = z_max
-    table["off_truth"] = np.where(np.isfinite(z_max), (z_max > threshold).astype(float), np.nan)
-    table.attrs["off_truth_z"] = threshold
-    if isinstance(table.attrs.get("units"), dict):
-        table.attrs["units"] = table.attrs["units"] | {"z_max": "1", "off_truth": "1"}
-    return table
-
-
-def off_truth_points(table: pd.DataFrame | None) -> tuple[int, ...]:
-    """Indices of the points flagged off their truth (``off_truth`` = 1)."""
-    if table is None or "off_truth" not in table:
-        return ()
-    return tuple(int(i) for i in table.index[(table["off_truth"] == 1.0).to_numpy()])
-
-
-def off_truth_lines(table: pd.DataFrame) -> list[str]:
-    """The summary's warning on the flagged points (first: it must be read first), [] when none."""
-    flagged = off_truth_points(table)
-    if not flagged:
-        return []
-    zs = z_table(table)
-    threshold = table.attrs.get("off_truth_z", OFF_TRUTH_Z)
-    lines = [f"WARNING: {len(flagged)} reduced point(s) off their truth by more than z = {threshold:.2f} "
-             "(|reduced - true|/u; the stated u does not cover the error: a wrong root, or an error the budget "
-             "misses) - reduced.csv's off_truth column marks them:"]
-    for index in flagged[:20]:
-        row = zs.loc[index]
-        worst = row.idxmax()
-        value, u, true = (table.loc[index, prefix + worst] for prefix in ("", "u_", "true_"))
-        lines.append(f"  point {index}: {worst} = {value:.4g} +- {u:.2g} against the truth {true:.4g} "
-                     f"(z = {row[worst]:.1f})")
-    if len(flagged) > 20:
-        lines.append(f"  ... and {len(flagged) - 20} more")
-    return lines
 
 
 @dataclass(frozen=True)

@@ -19,6 +19,7 @@ from __future__ import annotations
 import sys
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import pandas as pd
 from tqdm import tqdm
@@ -30,6 +31,7 @@ from rig.runner.dask_pool import run_dask_tasks
 from rig.runner.figures import import_in_background
 from rig.runner.operator import PointResult, run_operator
 from rig.runner.pool import run_pool_tasks
+from rig.runner.reduction import FormattedRows
 from rig.scenes.procedure import PlannedPoint, TimeoutPolicy
 from rig.scenes.stand_scene import StandScene
 from rig.stands.base import Stand
@@ -90,23 +92,60 @@ class ShardedSweep(SweepResult):
     """A sweep whose points were logged in shards (rig.runner.chunks): besides SweepResult's facts,
     the shards stored now and the reduced rows by the first point index of their shard (of the
     shards stored now and of those an earlier attempt left), the per-point columns of the shards
-    stored now (by the same key), the point that stopped the sweep, and the workers' CPU time [s]."""
+    stored now (by the same key), the point that stopped the sweep, the workers' CPU time [s] and
+    the reduced rows as lines of reduced.csv gathered in point order (None: not gathered, or not
+    every chunk's)."""
 
     stored: list[Shard] = field(default_factory=list)
     tables: dict[int, pd.DataFrame] = field(default_factory=dict)
     columns: dict[int, LogColumns] = field(default_factory=dict)
     stopped_at: int | None = None
     workers_cpu_s: float = 0.0
+    rows: FormattedRows | None = None
+
+
+class _RowsGatherer:
+    """Appends each chunk's rows (ChunkResult.rows) to ``path`` as the chunks arrive; gives up (and
+    removes the file) at a chunk without rows, with other columns, or out of point order."""
+
+    def __init__(self, path: Path) -> None:
+        self.path, self.columns, self.last = path, None, -1
+        self.handle = open(path, "wb")  # noqa: SIM115 - closed by result()
+
+    def add(self, first: int, table: pd.DataFrame, rows: str | None) -> None:
+        if self.handle is None:
+            return
+        if rows is None or first <= self.last or self.columns not in (None, tuple(table.columns)):
+            self.handle.close()
+            self.handle = None
+            self.path.unlink(missing_ok=True)
+            return
+        self.handle.write(rows.encode())
+        self.columns, self.last = tuple(table.columns), int(table.index[-1])
+
+    def result(self) -> FormattedRows | None:
+        if self.handle is None or self.columns is None:
+            self.close()
+            return None
+        self.handle.close()
+        return FormattedRows(self.path, self.columns)
+
+    def close(self) -> None:
+        if self.handle is not None:
+            self.handle.close()
+            self.handle = None
 
 
 def run_sharded_sweep(scene: StandScene, stand: Stand, points: Sequence[PlannedPoint], earlier: Sequence[Shard],
                       folder, metadata: RunMetadata, *, jobs: int, progress: bool | None,
-                      scheduler: str | None = None) -> ShardedSweep:
+                      scheduler: str | None = None, rows: Path | None = None) -> ShardedSweep:
     """Simulate, log and reduce ``points`` in chunks on the workers (``jobs`` processes, the Dask
     scheduler at ``scheduler``, or this process with ``stand`` when ``jobs`` is 1), storing each
     chunk's shard in ``folder`` as its result arrives (in plan order); the shards ``earlier`` (of an
     interrupted attempt) are reduced on the workers too when the scene reduces. A point's error is
-    raised as a serial run raises it, after the chunks before it are stored."""
+    raised as a serial run raises it, after the chunks before it are stored. ``rows``: a file to
+    gather the chunks' rows into as lines of reduced.csv (when there are no ``earlier`` shards: the
+    chunks then arrive in point order)."""
     result = ShardedSweep()
     reduce = scene.outputs.reduce
     earlier_tasks = [ReduceTask(shard.indices[0], shard.path.read_bytes()) for shard in earlier] if reduce else []
@@ -116,6 +155,7 @@ def run_sharded_sweep(scene: StandScene, stand: Stand, points: Sequence[PlannedP
 
     preload = scene.outputs.figures and (scheduler is not None or jobs > 1)  # this process only waits meanwhile
     importing: list = []
+    gatherer = _RowsGatherer(rows) if rows is not None and reduce and not earlier else None
     with tqdm(total=len(points), desc=f"scene {scene.name}", unit="point", disable=not show_progress(progress),
               file=sys.stderr) as bar:
 
@@ -135,20 +175,26 @@ def run_sharded_sweep(scene: StandScene, stand: Stand, points: Sequence[PlannedP
                 result.failures.append(Failure(index, settings, message))
             if done.table is not None:
                 result.tables[done.written[0] if done.written else done.first] = done.table
+                if gatherer is not None:
+                    gatherer.add(done.written[0] if done.written else done.first, done.table, done.rows)
             bar.update(len(done.written) + len(done.failures))
             if done.stopped:
                 result.stopped, result.stopped_at = True, done.failures[-1][0]
             return done.stopped
 
-        if scheduler is not None:
-            run_dask_tasks(scene, make_tasks, scheduler, deliver)
-        elif jobs > 1:
-            run_pool_tasks(scene, make_tasks, jobs, deliver)
-        else:
-            tasks = make_tasks(1)
-            if any(not isinstance(task, ReduceTask) for task in tasks):
-                stand.calibrate(scene.seed)
-            for task in tasks:
-                if deliver(run_task(stand, scene, task)):
-                    break
+        try:
+            if scheduler is not None:
+                run_dask_tasks(scene, make_tasks, scheduler, deliver)
+            elif jobs > 1:
+                run_pool_tasks(scene, make_tasks, jobs, deliver)
+            else:
+                tasks = make_tasks(1)
+                if any(not isinstance(task, ReduceTask) for task in tasks):
+                    stand.calibrate(scene.seed)
+                for task in tasks:
+                    if deliver(run_task(stand, scene, task)):
+                        break
+        finally:
+            if gatherer is not None:
+                result.rows = gatherer.result()
     return result

@@ -58,14 +58,14 @@ def test_old_layout_log_is_reduced_unchanged(old_log):
     reduction, _ = reduce_log_file(old_log)
     assert reduction.damaged == ()
     text = (old_log.parent / "reduced.csv").read_text()
-    # the same table, plus the off-truth columns a twin's table gets at the end (rig.runner.summary)
+    # the same table, plus the off-truth columns a twin's table gets at the end (rig.runner.off_truth)
     assert text.splitlines()[0].endswith(",z_max,off_truth")
     assert "\n".join(line.rsplit(",", 2)[0] for line in text.splitlines()) + "\n" == OLD_CSV.read_text()
 
 
 def test_new_layout_gives_the_old_layout_values(new_run):
     new, old = (pd.read_csv(path, index_col="point") for path in (new_run / "reduced.csv", OLD_CSV))
-    new = new.drop(columns=["z_max", "off_truth"])  # added since (rig.runner.summary.with_off_truth)
+    new = new.drop(columns=["z_max", "off_truth"])  # added since (rig.runner.off_truth.with_off_truth)
     assert list(new.columns) == list(old.columns) and list(new.index) == list(old.index)
     pd.testing.assert_frame_equal(new, old, check_dtype=False, rtol=1e-3, atol=1e-8)
     with h5py.File(new_run / "log.h5", "r") as f:

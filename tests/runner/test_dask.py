@@ -30,6 +30,7 @@ from distributed import Client, LocalCluster
 
 import rig.runner.chunks
 import rig.runner.dask_pool
+import rig.runner.reduction
 import rig.stands
 from rig.errors import ParameterError
 from rig.logbook import RunMetadata, utc_timestamp
@@ -135,7 +136,10 @@ def test_short_stand_a_scene_on_dask_equals_one_job(scheduler, tmp_path):
         text = text.replace(old, new)
     scene = parse_scene(text + "\n[outputs]\nfigures = false\n", name="default_short")
     one = run_scene(scene, tmp_path / "one", progress=False)
-    cluster = run_scene(scene, tmp_path / "dask", scheduler=scheduler, progress=False)
+    formatted, used = rig.runner.reduction._csv_from_rows, []
+    with mock.patch.object(rig.runner.reduction, "_csv_from_rows", lambda *a: used.append(formatted(*a)) or used[-1]):
+        cluster = run_scene(scene, tmp_path / "dask", scheduler=scheduler, progress=False)
+    assert used == [True]  # reduced.csv was made of the lines the workers formatted
     assert one.failures == cluster.failures == () and cluster.in_log == 3
     _same_outputs(tmp_path / "one", tmp_path / "dask")
     table = pd.read_csv(tmp_path / "dask" / "reduced.csv", index_col="point")

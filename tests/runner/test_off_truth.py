@@ -12,7 +12,7 @@ import pytest
 from scipy.stats import norm
 
 from rig.cli import run as run_cli
-from rig.runner import summary as S
+from rig.runner import off_truth as S
 from rig.runner.stand_run import RunReport
 
 
