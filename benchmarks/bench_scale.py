@@ -3,7 +3,8 @@ study scales out on worker processes.
 
     python benchmarks/bench_scale.py [--points 100 1600 10000] [--repeats 1] [--jobs 1] [--gate-time 4.0]
                                      [--study 100000] [--study-workers 2] [--scaling 10000]
-                                     [--scaling-runs j1 j2 cluster] [--peak-memory] [--ceiling 256]
+                                     [--scaling-runs j1 j2 cluster] [--scaling-repeats 1] [--peak-memory]
+                                     [--ceiling 256]
 
 The scene is the built-in `default` (stand A, quasi-static drive, 4 s gates, instruments on)
 with only the sweep's `num` raised (issue 12). Each run is `python -m rig run SCENE -o DIR` in a
@@ -30,7 +31,9 @@ workers' CPU time (the pool's processes, or the cluster's workers measured on th
 point [ms]; the serial fraction s = parent CPU / (parent + workers CPU) - the part of the study no
 worker can take over - and Amdahl's projection of the wall time and speed-up on 8, 32 and 128
 workers, wall(p) = total CPU (s + (1 - s)/p); the speed-up of ``-j 2`` and of the cluster over
-``-j 1`` measured in the same run, and the load average before each run. ``--peak-memory`` adds
+``-j 1`` measured in the same run, and the load average before each run. ``--scaling-repeats R``
+runs the three R times in turn and states the median speed-up and serial fraction (the machine's
+own speed drifts by some 10 % between minutes; a round's three runs share it). ``--peak-memory`` adds
 the parent's peak resident memory [MB] of each run (ru_maxrss). The cluster's workers run with
 Dask's statistical profiler off (WORKER_CONFIG, as docs/scaling.md advises).
 
@@ -201,39 +204,48 @@ def amdahl_wall(total_cpu: float, serial: float, workers: int) -> float:
 SCALING_RUNS = {"j1": "-j 1", "j2": "-j 2", "cluster": "LocalCluster 2 workers"}
 
 
-def scaling(points: int, gate_time_s: float, folder: Path, peak_memory: bool, which: list[str]) -> None:
-    """-j 1, -j 2 and a two-worker LocalCluster (those of ``which``) side by side on a study of ``points`` points."""
+def scaling(points: int, gate_time_s: float, folder: Path, peak_memory: bool, which: list[str], repeats: int = 1) -> None:
+    """-j 1, -j 2 and a two-worker LocalCluster (those of ``which``) side by side on a study of
+    ``points`` points, ``repeats`` rounds (each round runs them one after the other, so that a change of
+    the machine's speed between rounds falls on all three); the speed-ups are per round, then their median."""
     scene = scene_file(folder, points, gate_time_s)
-    runs = {}
-    if "j1" in which:
-        runs["-j 1"] = scaling_run(scene, "1")
-    if "j2" in which:
-        runs["-j 2"] = scaling_run(scene, "2")
-    if "cluster" in which:
-        from distributed import Client
+    rounds: list[dict[str, dict]] = []
+    for _ in range(repeats):
+        runs = {}
+        if "j1" in which:
+            runs["-j 1"] = scaling_run(scene, "1")
+        if "j2" in which:
+            runs["-j 2"] = scaling_run(scene, "2")
+        if "cluster" in which:
+            from distributed import Client
 
-        with local_cluster(2) as cluster, Client(cluster.scheduler_address, set_as_default=False) as client:
-            runs["LocalCluster 2 workers"] = scaling_run(scene, cluster.scheduler_address, client)
+            with local_cluster(2) as cluster, Client(cluster.scheduler_address, set_as_default=False) as client:
+                runs["LocalCluster 2 workers"] = scaling_run(scene, cluster.scheduler_address, client)
+        rounds.append(runs)
     print(f"\nscaling: {points} points, the default scene (gate {gate_time_s:g} s); parent = the process that runs "
-          "the study, workers = the pool's processes or the cluster's workers")
-    print(f"{'run':>24} {'wall [s]':>9} {'load':>5} {'parent [ms/pt]':>14} {'workers [ms/pt]':>15} "
+          f"the study, workers = the pool's processes or the cluster's workers; {repeats} round(s)")
+    print(f"{'round':>5} {'run':>24} {'wall [s]':>9} {'load':>5} {'parent [ms/pt]':>14} {'workers [ms/pt]':>15} "
           f"{'total [ms/pt]':>13} {'serial s':>8} {'speed-up':>8}" + (f" {'peak [MB]':>9}" if peak_memory else ""))
-    base = runs["-j 1"]["wall"] if "-j 1" in runs else math.nan
-    for label, run in runs.items():
+    for k, runs in enumerate(rounds, 1):
+        base = runs["-j 1"]["wall"] if "-j 1" in runs else math.nan
+        for label, run in runs.items():
+            total = run["parent"] + run["workers"]
+            print(f"{k:>5} {label:>24} {run['wall']:>9.2f} {run['load']:>5.2f} {1e3 * run['parent'] / points:>14.3f} "
+                  f"{1e3 * run['workers'] / points:>15.3f} {1e3 * total / points:>13.3f} {run['parent'] / total:>8.4f} "
+                  f"{base / run['wall']:>7.2f}x" + (f" {run['maxrss_MB']:>9.0f}" if peak_memory else ""))
+    for label in [label for label in ("-j 2", "LocalCluster 2 workers") if label in rounds[0]]:
+        serials = [runs[label]["parent"] / (runs[label]["parent"] + runs[label]["workers"]) for runs in rounds]
+        speedups = [runs["-j 1"]["wall"] / runs[label]["wall"] if "-j 1" in runs else math.nan for runs in rounds]
+        serial, speedup = statistics.median(serials), statistics.median(speedups)
+        run = rounds[-1][label]
         total = run["parent"] + run["workers"]
-        print(f"{label:>24} {run['wall']:>9.2f} {run['load']:>5.2f} {1e3 * run['parent'] / points:>14.3f} "
-              f"{1e3 * run['workers'] / points:>15.3f} {1e3 * total / points:>13.3f} {run['parent'] / total:>8.4f} "
-              f"{base / run['wall']:>7.2f}x" + (f" {run['maxrss_MB']:>9.0f}" if peak_memory else ""))
-    for label in [label for label in ("-j 2", "LocalCluster 2 workers") if label in runs]:
-        run = runs[label]
-        total = run["parent"] + run["workers"]
-        serial = run["parent"] / total
         projection = ", ".join(f"{p} workers {amdahl_wall(total, serial, p):.1f} s ({1.0 / (serial + (1 - serial) / p):.1f}x)"
                                for p in (8, 32, 128))
-        print(f"{label}: parent CPU {100 * serial:.2f} % of the study's CPU ({verdict(serial <= BUDGET_PARENT_SHARE)} "
-              f"the budget {100 * BUDGET_PARENT_SHARE:g} %); speed-up over -j 1 {base / run['wall']:.2f}x "
-              f"({verdict(base / run['wall'] >= BUDGET_SPEEDUP_2)} the budget {BUDGET_SPEEDUP_2:g}x on an idle 2-core "
-              f"machine); Amdahl: {projection}")
+        print(f"{label}: parent CPU {100 * serial:.2f} % of the study's CPU, median of {repeats} "
+              f"({verdict(serial <= BUDGET_PARENT_SHARE)} the budget {100 * BUDGET_PARENT_SHARE:g} %); speed-up over "
+              f"-j 1 {speedup:.2f}x, median of " + ", ".join(f"{s:.2f}" for s in speedups) +
+              f" ({verdict(speedup >= BUDGET_SPEEDUP_2)} the budget {BUDGET_SPEEDUP_2:g}x on an idle 2-core machine); "
+              f"Amdahl: {projection}")
 
 
 def ceiling_child(scene: str, repeats: int) -> int:
@@ -308,6 +320,8 @@ def main() -> int:
     parser.add_argument("--scaling", type=int, default=0,
                         help="also run this many points with -j 1, -j 2 and on a two-worker LocalCluster side by side")
     parser.add_argument("--peak-memory", action="store_true", help="print the parent's peak memory of each --scaling run")
+    parser.add_argument("--scaling-repeats", type=int, default=1,
+                        help="rounds of the --scaling runs (speed-ups per round, then their median; default 1)")
     parser.add_argument("--scaling-runs", nargs="+", choices=sorted(SCALING_RUNS), default=list(SCALING_RUNS),
                         help="which --scaling runs (default: all three)")
     parser.add_argument("--ceiling", type=int, default=0, metavar="POINTS",
@@ -354,7 +368,8 @@ def main() -> int:
         if args.ceiling:
             ceiling(args.ceiling, args.ceiling_repeats, args.gate_time, Path(folder))
         if args.scaling:
-            scaling(args.scaling, args.gate_time, Path(folder), args.peak_memory, args.scaling_runs)
+            scaling(args.scaling, args.gate_time, Path(folder), args.peak_memory, args.scaling_runs,
+                    args.scaling_repeats)
     return 0
 
 
