@@ -8,10 +8,20 @@ depends on its start. :func:`fixed_points` finds them all: h(y) = ln g(e^y) - y 
 ``points`` equally spaced y = ln mu over the bracket, and every sign change between neighbours
 (or an exact zero) is refined with Brent's method to ``xtol`` in ln mu.
 
-Limits (stated, not hidden): two roots closer than one scan step (ln(hi/lo)/(points - 1), 7.8 %
-in mu for the default 48 points over [0.05, 2]) cancel and are both missed, and so is a root
-where h touches zero without crossing it (a double root at the peak of the ratio); there
-mu is not identifiable anyway (rig.reduction.iteration: |1 - d ln g/d ln mu| -> 0).
+Two roots on either side of a peak or a trough of the ratio that lie within one scan step of each
+other leave no sign change between the nodes. So at every node where |h| is smallest among its
+neighbours (one neighbour at the ends of the bracket), with h of one sign at all of them (h turns
+back towards zero there, or heads for zero at an end), the extremum of h between those neighbours
+is located (bounded Brent minimisation to ``xtol``): if h crosses zero there, both crossings are
+refined with Brent's method; if it touches zero exactly, the touching point is a (double) root.
+Without this a pair of roots a fraction of a per cent apart - the true mu sitting next to a trough
+of the ratio - was lost, and a root elsewhere in the bracket was reported as the only one. Where
+the ratio is monotone, |h| has no such node between the ends and nothing is added to the scan.
+
+Limits (stated, not hidden): two extrema of h closer than about two scan steps (a step is
+ln(hi/lo)/(points - 1), 7.8 % in mu for the default 48 points over [0.05, 2]), e.g. three roots
+within two steps, are not all resolved; nor is a pair whose dip below zero is lost in rounding
+(roots closer than about 1e-6 in ln mu).
 """
 
 from __future__ import annotations
@@ -20,7 +30,7 @@ import math
 from collections.abc import Callable
 
 import numpy as np
-from scipy.optimize import brentq
+from scipy.optimize import brentq, minimize_scalar
 
 from rig import validate
 
@@ -34,6 +44,21 @@ def log_residual(estimate: Callable[[float], float], y: float) -> float:
     return math.log(g) - y if math.isfinite(g) and g > 0.0 else math.nan
 
 
+def _roots_near_extremum(h: Callable[[float], float], left: float, right: float, sign: float,
+                         xtol: float) -> list[float]:
+    """The roots of h [ln mu] strictly inside (left, right), where h has the sign ``sign`` at both ends
+    and at the node between them: none, one (h touches zero) or two (h crosses zero and returns)."""
+    best = minimize_scalar(lambda t: sign * h(t), bounds=(left, right), method="bounded",
+                           options={"xatol": xtol})
+    y_star = float(best.x)
+    h_star = h(y_star)
+    if not math.isfinite(h_star) or (h_star != 0.0 and (h_star < 0.0) == (sign < 0.0)):
+        return []
+    if h_star == 0.0:
+        return [y_star]
+    return [brentq(h, left, y_star, xtol=xtol), brentq(h, y_star, right, xtol=xtol)]
+
+
 def fixed_points(estimate: Callable[[float], float], lo: float, hi: float, points: int = SCAN_POINTS,
                  xtol: float = XTOL) -> tuple[float, ...]:
     """The fixed points mu = estimate(mu) in [lo, hi] [1], ascending (module docstring).
@@ -45,14 +70,27 @@ def fixed_points(estimate: Callable[[float], float], lo: float, hi: float, point
     points = validate.integer("points", points, 2)
     ys = np.linspace(math.log(lo), math.log(hi), points)
     hs = [log_residual(estimate, float(y)) for y in ys]
+
+    def h(t: float) -> float:
+        return log_residual(estimate, t)
+
     roots: list[float] = []
-    for k, (y, h) in enumerate(zip(ys, hs)):
-        if h == 0.0:
+    for k, (y, h_k) in enumerate(zip(ys, hs)):
+        if h_k == 0.0:
             roots.append(float(y))
             continue
+        if math.isfinite(h_k):
+            window = (max(k - 1, 0), min(k + 1, points - 1))  # one step each side, inside the bracket
+            near = [hs[j] for j in window if j != k]
+            same_sign = all(math.isfinite(v) and v != 0.0 and (v < 0.0) == (h_k < 0.0) for v in near)
+            if same_sign and abs(h_k) <= min(abs(v) for v in near) and abs(h_k) < max(abs(v) for v in near):
+                roots.extend(_roots_near_extremum(h, float(ys[window[0]]), float(ys[window[1]]),
+                                                  math.copysign(1.0, h_k), xtol))
         if k + 1 == points:
             break
         h_next = hs[k + 1]
-        if math.isfinite(h) and math.isfinite(h_next) and h_next != 0.0 and (h < 0.0) != (h_next < 0.0):
-            roots.append(brentq(lambda t: log_residual(estimate, t), float(y), float(ys[k + 1]), xtol=xtol))
-    return tuple(math.exp(y) for y in roots)
+        if math.isfinite(h_k) and math.isfinite(h_next) and h_next != 0.0 and (h_k < 0.0) != (h_next < 0.0):
+            roots.append(brentq(h, float(y), float(ys[k + 1]), xtol=xtol))
+    roots.sort()
+    unique = [y for k, y in enumerate(roots) if k == 0 or y - roots[k - 1] > 2.0 * xtol]  # windows overlap
+    return tuple(math.exp(y) for y in unique)

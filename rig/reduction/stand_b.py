@@ -214,8 +214,10 @@ def reduce(
 
 
 def roots_text(driver: str, roots: tuple[float, ...]) -> str:
-    """"two roots: mu_v = 0.28 and 0.60" [1]."""
-    names = ", ".join(f"{r:.2f}" for r in roots[:-1]) + f" and {roots[-1]:.2f}"
+    """"two roots: mu_v = 0.28 and 0.60" [1]: two decimals, more (up to six) where two roots would
+    read alike ("three roots: mu_v = 0.555, 1.453 and 1.455")."""
+    digits = next((d for d in range(2, 7) if len({f"{r:.{d}f}" for r in roots}) == len(roots)), 6)
+    names = ", ".join(f"{r:.{digits}f}" for r in roots[:-1]) + f" and {roots[-1]:.{digits}f}"
     count = {2: "two", 3: "three"}.get(len(roots), str(len(roots)))
     return f"{count} roots: {driver} = {names}"
 
