@@ -115,7 +115,8 @@ def scan(estimate: Callable[[float], float], lo: float, hi: float, points: int =
                 found, y_star, h_star = _near_extremum(h, float(ys[window[0]]), float(ys[window[1]]),
                                                        math.copysign(1.0, h_k), xtol)
                 roots.extend(found)
-                inside = ys[0] + 10.0 * xtol < y_star < ys[-1] - 10.0 * xtol  # not a bracket end
+                # a turning point lies below both window ends; a minimum at a bracket end is none
+                inside = abs(h_star) < min(abs(hs[window[0]]), abs(hs[window[1]]))
                 if not found and inside and math.isfinite(h_star):
                     turning.append(TurningPoint(math.exp(y_star), h_star))
         if k + 1 == points:

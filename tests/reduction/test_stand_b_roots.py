@@ -20,7 +20,7 @@ from rig.reduction.geometry import StandBGeometry
 from rig.reduction.iteration import ReductionSettings
 from rig.reduction.readings import Measured
 from rig.reduction.result import reduce_stand_point
-from rig.reduction.roots import fixed_points, scan
+from rig.reduction.roots import RootScan, fixed_points, scan
 from tests.reduction.synthetic import stand_b_readings
 
 B = StandBGeometry()
@@ -158,6 +158,8 @@ def test_a_dip_that_misses_zero_is_a_turning_point_not_a_root(centre, miss, widt
     assert found.roots == ()
     assert [t.mu for t in found.turning_points] == pytest.approx([math.exp(centre)], rel=1e-4)
     assert found.turning_points[0].residual == pytest.approx(sign * miss, rel=1e-6, abs=1e-12)
+    beyond = scan(lambda mu: mu * math.exp(sign * (width * (math.log(mu) - math.log(3.0)) ** 2 + miss)), 0.05, 2.0)
+    assert beyond == RootScan((), ())  # |h| smallest at the bracket's end: the dip is outside, no turning point
 
 
 def test_the_pair_next_to_the_ratios_trough_is_found():
