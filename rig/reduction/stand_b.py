@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 from rig import validate
 from rig.reduction import equations as eq
-from rig.reduction.coefficients import Coefficients, call_model, corrected
+from rig.reduction.coefficients import Coefficients, call_model, corrected, with_model_error
 from rig.reduction.drivers import significant_drivers
 from rig.reduction.geometry import StandBGeometry, with_inputs
 from rig.reduction.iteration import ReductionSettings
@@ -266,23 +266,28 @@ def driver_roots(inputs: InputSet, driver: str, *, readings: StandBReadings, geo
     eq. 33 for mu_v, 27 for mu_T, 26 for mu_M), at the nominal input values (rig.reduction.roots),
     and every turning point of the driver's ratio (a peak, a trough) that the reading misses by at
     most ``settings.significance`` standard uncertainties: z = |ln(g/mu)| / u(ln g) at that mu, u
-    from a first-order propagation of the inputs at fixed alpha'. Near a trough of F_V/F_N a
+    from a first-order propagation of the inputs at fixed alpha' (with the contact model's
+    numerical error there when the coefficients state one, rig.reduction.coefficients). Near a trough of F_V/F_N a
     reading a fraction of its u lower has only the root far off: without this that root would be
     reported as unique."""
     nominal = inputs.mapping(inputs.values)
     chain = dict(readings=readings, geometry=geometry, coefficients=coefficients, settings=settings)
-    _, _, state_at = chain_at(nominal, **chain)
+    out, alpha_per_mu, state_at = chain_at(nominal, **chain)
     lo, hi = mu_bracket(readings, geometry, coefficients)
     if not lo < hi:
         return DriverRoots((), {})
     found = scan(lambda mu: state_at(mu)[0][driver], lo, hi)
+    error_at = getattr(coefficients, "numerical_error", None)
     near = {}
     for turning in found.turning_points:
         def log_estimate(values: Mapping[str, float], mu: float = turning.mu) -> dict[str, float]:
             g = chain_at(values, **chain)[2](mu)[0][driver]
             return {"ln_g": math.log(g) if math.isfinite(g) and g > 0.0 else math.nan}
 
-        u = float(first_order(log_estimate, inputs, ("ln_g",)).uncertainties[0])
+        at = inputs  # plus the contact model's numerical error there, as in the reduction's budget
+        if error_at is not None:
+            at = with_model_error(inputs, error_at(out["l_over_a"], out["c_over_a"], alpha_per_mu * turning.mu))
+        u = float(first_order(log_estimate, at, ("ln_g",)).uncertainties[0])
         z = abs(turning.residual) / u if u > 0.0 else math.inf
         if z <= settings.significance:  # NaN (no u) never counts: the scan's roots stand alone
             near[turning.mu] = z

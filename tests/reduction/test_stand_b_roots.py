@@ -214,6 +214,35 @@ def test_a_trough_within_u_of_the_reading_with_nothing_to_decide_is_nan_and_name
     assert "not a fixed point" in point.reasons["mu_v"]
 
 
+class BumpWithError:
+    """The bump law with a stated numerical error of nu_v (rig.reduction.coefficients): +- 0.003."""
+
+    def __call__(self, l_over_a: float, c_over_a: float, alpha: float) -> tuple[float, float, float]:
+        return bump_law(l_over_a, c_over_a, alpha)
+
+    def numerical_error(self, l_over_a: float, c_over_a: float, alpha: float) -> tuple[float, float, float]:
+        return 0.0, 0.003, 0.0
+
+
+def test_the_models_stated_error_widens_what_the_reading_cannot_exclude():
+    """mu = 1.40, F_V 3 u low: the trough is missed by z > 2 with exact coefficients (one root, 0.54, reported
+    alone), by z < 2 once nu_v's error +- 0.003 (u = 0.003/sqrt 3, rectangular) is counted."""
+    readings, _ = stand_b_readings(1.40, LOAD, 0.0, 0.2, bump_law, b_over_a=B_OVER_A)
+    read = readings.lateral_force
+    readings = dataclasses.replace(readings, lateral_force=Measured(read.value - 3.0 * read.u, read.u))
+    level = readings.lateral_force.value / LOAD
+    u_ln = math.hypot(read.u / readings.lateral_force.value, 0.05 / LOAD)
+    trough_x = math.sqrt(4.0 + math.sqrt(5.0))
+    u_nu = 0.003 / math.sqrt(3.0) / (0.05 + 0.5 / (1.0 + trough_x**2))
+    assert bump_turning_points(level, u_ln) == {} and len(bump_roots(level)) == 1
+    near = bump_turning_points(level, math.hypot(u_ln, u_nu))
+    assert list(near) == pytest.approx([1.4539], abs=1e-4)
+    assert stand_b.reduce(readings, bump_law).note == ""
+    point = stand_b.reduce(readings, BumpWithError())
+    assert named_roots(point.note) == pytest.approx([bump_roots(level)[0], 1.4539], abs=0.006)
+    assert f"1.45 at {near[next(iter(near))]:.1f} u" in point.note
+
+
 def named_roots(note: str) -> list[float]:
     """The roots a note names: "three roots: mu_v = 0.555, 1.453 and 1.455; ..." -> [0.555, 1.453, 1.455]."""
     match = re.search(r"roots: mu_v = ([0-9., ]+?) and ([0-9.]+)", note)
