@@ -25,14 +25,14 @@ from dataclasses import dataclass
 
 from rig import validate
 from rig.reduction import equations as eq
-from rig.reduction.coefficients import Coefficients, call_model, corrected
+from rig.reduction.coefficients import Coefficients, call_model, corrected, with_model_error
 from rig.reduction.drivers import significant_drivers
 from rig.reduction.geometry import StandBGeometry, with_inputs
 from rig.reduction.iteration import ReductionSettings
 from rig.reduction.readings import Measured, reading_inputs, reading_value
 from rig.reduction.result import Evaluation, Guard, ReducedPoint, Start, evaluate_fixed_point, reduce_stand_point
-from rig.reduction.roots import fixed_points
-from rig.reduction.uncertainty import InputQuantity, InputSet
+from rig.reduction.roots import scan
+from rig.reduction.uncertainty import InputQuantity, InputSet, first_order
 
 OUTPUTS = (
     "l_m", "c_m", "l_over_a", "c_over_a", "M_C_N_m", "alpha_prime", "nu_T", "nu_v", "nu_0", "mu_v", "mu_T", "mu_M",
@@ -168,11 +168,13 @@ def reduce(
     """Reduce one stand-B operating point (see rig.reduction.stand_a.reduce for the arguments).
 
     The driving estimate's equation is checked for more than one root in the bracket
-    (:func:`mu_bracket`, rig.reduction.roots). With two or more, the next significant estimate
-    whose own equation has exactly one root drives alpha' instead (mu_T from F_T, mu_M from M_C);
-    failing that, :func:`choose_root` keeps the root the other estimates agree with, or reports
-    the driven outputs as NaN naming the roots. The returned point's ``note`` says which (empty
-    when the root is unique): a non-unique mu is never resolved silently.
+    (:func:`mu_bracket`, rig.reduction.roots), counting a turning point of its ratio within
+    ``settings.significance`` standard uncertainties of the reading as a root (:func:`driver_roots`:
+    the reading cannot exclude mu there). With two or more, the next significant estimate whose own
+    equation has exactly one root and no such turning point drives alpha' instead (mu_T from F_T,
+    mu_M from M_C); failing that, :func:`choose_root` keeps the root the other estimates agree with,
+    or reports the driven outputs as NaN naming the roots. The returned point's ``note`` says which
+    (empty when the root is unique): a non-unique mu is never resolved silently.
     """
     geometry = StandBGeometry() if geometry is None else geometry
     settings = ReductionSettings() if settings is None else settings
@@ -188,19 +190,20 @@ def reduce(
     driver = point.driver or next(iter(drivers), "")
     if not driver:
         return dataclasses.replace(point, note="")
-    nominal = inputs.mapping(inputs.values)
 
-    def roots_of(name: str) -> tuple[float, ...]:
-        return driver_roots(nominal, name, readings=readings, geometry=geometry, coefficients=coefficients,
+    def roots_of(name: str) -> DriverRoots:
+        return driver_roots(inputs, name, readings=readings, geometry=geometry, coefficients=coefficients,
                             settings=settings)
 
-    roots = roots_of(driver)
+    found = roots_of(driver)
+    roots = found.candidates
     if len(roots) < 2:
         return dataclasses.replace(point, note="")
-    head = roots_text(driver, roots)
+    head = roots_text(driver, roots, found.near)
     for other in (name for name in drivers if name != driver):  # a reading whose equation has one root
-        unique = roots_of(other)
-        if len(unique) != 1:
+        other_roots = roots_of(other)
+        unique = other_roots.exact
+        if len(unique) != 1 or other_roots.near:
             continue
         alternative = reduce_stand_point(evaluate, inputs, numerators, GUARDS, DRIVEN,
                                          dataclasses.replace(settings, mu_start=unique[0]), driver=other, **chain)
@@ -210,14 +213,21 @@ def reduce(
     at_roots = [reduce_stand_point(evaluate, inputs, numerators, GUARDS, DRIVEN,
                                    dataclasses.replace(settings, mu_start=root), driver=driver, **chain)
                 for root in roots]
-    return choose_root(driver, roots, at_roots)
+    return choose_root(driver, roots, at_roots, found.near)
 
 
-def roots_text(driver: str, roots: tuple[float, ...]) -> str:
-    """"two roots: mu_v = 0.28 and 0.60" [1]."""
-    names = ", ".join(f"{r:.2f}" for r in roots[:-1]) + f" and {roots[-1]:.2f}"
-    count = {2: "two", 3: "three"}.get(len(roots), str(len(roots)))
-    return f"{count} roots: {driver} = {names}"
+def roots_text(driver: str, roots: tuple[float, ...], near: Mapping[float, float] | None = None) -> str:
+    """"two roots: mu_v = 0.28 and 0.60" [1]: two decimals, more (up to six) where two roots would
+    read alike ("three roots: mu_v = 0.555, 1.453 and 1.455"); ``near`` {mu: z}: the roots that are
+    turning points of the ratio z standard uncertainties from the reading (:func:`driver_roots`),
+    named after the list: "two roots: mu_v = 0.55 and 1.45 (turning points of the ratio within u of
+    the reading: 1.45 at 1.3 u)"."""
+    digits = next((d for d in range(2, 7) if len({f"{r:.{d}f}" for r in roots}) == len(roots)), 6)
+    names = ", ".join(f"{r:.{digits}f}" for r in roots[:-1]) + f" and {roots[-1]:.{digits}f}"
+    count = {2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}.get(len(roots), str(len(roots)))
+    turning = ", ".join(f"{mu:.{digits}f} at {z:.1f} u" for mu, z in sorted((near or {}).items()))
+    return f"{count} roots: {driver} = {names}" + (f" (turning points of the ratio within u of the reading: "
+                                                    f"{turning})" if turning else "")
 
 
 MU_BRACKET = (0.05, 2.0)  # the range of mu searched for roots: stand B's parameter range of mu [1]
@@ -235,16 +245,53 @@ def mu_bracket(readings: StandBReadings, geometry: StandBGeometry, coefficients:
     return lo, hi
 
 
-def driver_roots(values: Mapping[str, float], driver: str, *, readings: StandBReadings, geometry: StandBGeometry,
-                 coefficients: Coefficients, settings: ReductionSettings) -> tuple[float, ...]:
+@dataclass(frozen=True)
+class DriverRoots:
+    """The roots of a driver's equation in the bracket: ``exact`` [1], the fixed points at the
+    nominal readings, and ``near`` {mu [1]: z [1]}, turning points of its ratio that miss the reading
+    by z <= significance of their standard uncertainty (the readings cannot exclude mu there)."""
+
+    exact: tuple[float, ...]
+    near: dict[float, float]
+
+    @property
+    def candidates(self) -> tuple[float, ...]:
+        """Every mu [1] the reading allows, ascending."""
+        return tuple(sorted((*self.exact, *self.near)))
+
+
+def driver_roots(inputs: InputSet, driver: str, *, readings: StandBReadings, geometry: StandBGeometry,
+                 coefficients: Coefficients, settings: ReductionSettings) -> DriverRoots:
     """Every mu [1] in :func:`mu_bracket` with mu = the driver's estimate at alpha'(mu) (eq. 21 with
-    eq. 33 for mu_v, 27 for mu_T, 26 for mu_M), at the input ``values`` (rig.reduction.roots)."""
-    _, _, state_at = chain_at(values, readings=readings, geometry=geometry, coefficients=coefficients,
-                              settings=settings)
+    eq. 33 for mu_v, 27 for mu_T, 26 for mu_M), at the nominal input values (rig.reduction.roots),
+    and every turning point of the driver's ratio (a peak, a trough) that the reading misses by at
+    most ``settings.significance`` standard uncertainties: z = |ln(g/mu)| / u(ln g) at that mu, u
+    from a first-order propagation of the inputs at fixed alpha' (with the contact model's
+    numerical error there when the coefficients state one, rig.reduction.coefficients). Near a trough of F_V/F_N a
+    reading a fraction of its u lower has only the root far off: without this that root would be
+    reported as unique."""
+    nominal = inputs.mapping(inputs.values)
+    chain = dict(readings=readings, geometry=geometry, coefficients=coefficients, settings=settings)
+    out, alpha_per_mu, state_at = chain_at(nominal, **chain)
     lo, hi = mu_bracket(readings, geometry, coefficients)
     if not lo < hi:
-        return ()
-    return fixed_points(lambda mu: state_at(mu)[0][driver], lo, hi)
+        return DriverRoots((), {})
+    found = scan(lambda mu: state_at(mu)[0][driver], lo, hi)
+    error_at = getattr(coefficients, "numerical_error", None)
+    near = {}
+    for turning in found.turning_points:
+        def log_estimate(values: Mapping[str, float], mu: float = turning.mu) -> dict[str, float]:
+            g = chain_at(values, **chain)[2](mu)[0][driver]
+            return {"ln_g": math.log(g) if math.isfinite(g) and g > 0.0 else math.nan}
+
+        at = inputs  # plus the contact model's numerical error there, as in the reduction's budget
+        if error_at is not None:
+            at = with_model_error(inputs, error_at(out["l_over_a"], out["c_over_a"], alpha_per_mu * turning.mu))
+        u = float(first_order(log_estimate, at, ("ln_g",)).uncertainties[0])
+        z = abs(turning.residual) / u if u > 0.0 else math.inf
+        if z <= settings.significance:  # NaN (no u) never counts: the scan's roots stand alone
+            near[turning.mu] = z
+    return DriverRoots(found.roots, near)
 
 
 def _difference_z(point: ReducedPoint, driver: str, other: str) -> float:
@@ -260,19 +307,26 @@ def _difference_z(point: ReducedPoint, driver: str, other: str) -> float:
     return abs(b - a) / math.sqrt(var)
 
 
-def choose_root(driver: str, roots: tuple[float, ...], points: list[ReducedPoint]) -> ReducedPoint:
+def choose_root(driver: str, roots: tuple[float, ...], points: list[ReducedPoint],
+                near: Mapping[float, float] | None = None) -> ReducedPoint:
     """The reduced point at the one root the other friction estimates agree with, or NaN naming the roots.
 
     At a root mu_r of the driver's equation, the other estimates (mu_T from F_T, mu_M from M_C)
     computed with the coefficients at alpha'(mu_r) equal mu_r only if mu_r is the contact's mu
     (each reading is mu nu(alpha'(mu)) with its own coefficient). A root is rejected when some
     other estimate differs from it by more than DISCRIMINATION_Z standard uncertainties of the
-    difference; exactly one root not rejected, with every other one rejected, is chosen.
-    Otherwise the driven outputs are NaN with the reason "two roots: mu_v = 0.28 and 0.60 ...".
+    difference; exactly one root not rejected, with every other one rejected, is chosen. A turning
+    point in ``near`` ({mu: z}, :func:`driver_roots`) is no fixed point: it is never chosen and
+    rejects nothing. Otherwise the driven outputs are NaN with the reason "two roots: mu_v =
+    0.28 and 0.60 ...".
     """
-    head = roots_text(driver, roots)
+    head = roots_text(driver, roots, near)
     verdicts, words = [], []
     for root, point in zip(roots, points):
+        if root in (near or {}):
+            verdicts.append(None)  # no fixed point: the iteration started there ends elsewhere
+            words.append(f"at {root:.2f} a turning point, not a fixed point")
+            continue
         zs = {other: _difference_z(point, driver, other) for other in MU_ORDER if other != driver}
         zs = {k: z for k, z in zs.items() if math.isfinite(z)}
         if not math.isfinite(point.values[driver]):
