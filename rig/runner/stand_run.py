@@ -40,12 +40,12 @@ from rig.logbook.writer import RUN_PART, same_run
 from rig.runner.dask_pool import check_scheduler
 from rig.runner.figures import reduced_vs_truth_figure
 from rig.runner.folder_lock import folder_lock
+from rig.runner.off_truth import off_truth_points
 from rig.runner.outputs import (REDUCED_FIGURE, REDUCED_ROWS_NAME, STAND_KIND, SUMMARY_NAME, claim_folder,
                                 output_folder, remove_stale, staged_outputs)
 from rig.runner.pool import WorkerError
 from rig.runner.reduction import (FormattedRows, Reduction, gathered_table, read_truth_if_any, reduce_to_files,
                                   table_to_files)
-from rig.runner.off_truth import off_truth_points
 from rig.runner.summary import RunFacts, summary_text
 from rig.runner.chunks import SETTLE_TRUTH
 from rig.runner.sweep import Failure, ShardedSweep, run_sharded_sweep, run_sweep

@@ -116,24 +116,19 @@ class _RowsGatherer:
         if self.handle is None:
             return
         if rows is None or first <= self.last or self.columns not in (None, tuple(table.columns)):
-            self.handle.close()
-            self.handle = None
+            self.result()
             self.path.unlink(missing_ok=True)
             return
         self.handle.write(rows.encode())
         self.columns, self.last = tuple(table.columns), int(table.index[-1])
 
     def result(self) -> FormattedRows | None:
-        if self.handle is None or self.columns is None:
-            self.close()
+        """The gathered rows (the file closed); None when given up or empty."""
+        if self.handle is None:
             return None
         self.handle.close()
-        return FormattedRows(self.path, self.columns)
-
-    def close(self) -> None:
-        if self.handle is not None:
-            self.handle.close()
-            self.handle = None
+        self.handle = None
+        return None if self.columns is None else FormattedRows(self.path, self.columns)
 
 
 def run_sharded_sweep(scene: StandScene, stand: Stand, points: Sequence[PlannedPoint], earlier: Sequence[Shard],
