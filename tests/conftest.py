@@ -49,9 +49,16 @@ Chromium; tests/fit/conftest.py's small stand-A run) or the tables it leaves in 
 (the R_x = 20 mm Psi-node tables of the fits): under pytest-xdist each group runs on one worker, so that it is
 built once, not by both workers at the same time. Every other module is its own group (as --dist loadfile)."""
 
-LONGEST_GROUPS = ("stand-a-fit", "lab-server")
-"""The groups that take longest (about 100 s and 60 s on an idle machine): run first, one per worker, so that
-the short modules fill in after them instead of one worker finishing a long group alone at the end."""
+LONGEST_GROUPS = ("lab-server", "stand-a-fit", "tests/runner/test_dask.py", "tests/teaching/test_tutorial_scripts.py",
+                  "tests/campaigns/test_disc_roller_campaigns.py", "tests/runner/test_outputs_whole.py",
+                  "tests/runner/test_damaged_points.py", "tests/fit/test_stand_b_coverage.py",
+                  "tests/runner/test_one_writer_per_kind.py", "tests/runner/test_resume_and_pool.py",
+                  "tests/runner/test_kill_lock_resume.py", "tests/cli/test_named_failures.py",
+                  "tests/fit/test_stand_b.py", "tests/lab/test_lab_cli.py")
+"""The groups (a module outside GROUPS is a group of its own) that take longest, longest first (the two
+GROUPS about 55-60 s each, then 20 s down to 7 s; measured with --durations=0, load about 2): they run
+first, so that the short modules fill in after them instead of one worker finishing a long module alone
+at the end while the other waits."""
 
 _GROUP_OF_MODULE = {module: group for group, modules in GROUPS.items() for module in modules}
 

@@ -20,6 +20,7 @@ import logging
 import os
 import sys
 import tempfile
+import threading
 import zipfile
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -121,8 +122,30 @@ def load_or_build(
     progress: Callable[[int, int], None] | None = None,
     workers: int = 1,
 ) -> tuple[SurrogateTable, CacheOutcome]:
-    """The table for ``inputs`` from the cache, or built (build_table) and saved there."""
+    """The table for ``inputs`` from the cache, or built (build_table) and saved there.
+
+    Threads of one process that ask for the same table at once build it once: the others wait
+    and load it (rig lab prepares its exercises' tables in a thread while a student's first
+    request may ask for the same one). Separate processes may each build it; the file is written
+    atomically either way.
+    """
     path = table_path(inputs, directory)
+    with _building(path):
+        return _load_or_build(inputs, path, progress, workers)
+
+
+_LOCKS_GUARD = threading.Lock()
+_LOCKS: dict[str, threading.Lock] = {}
+
+
+def _building(path: Path) -> threading.Lock:
+    """The lock held while the table of cache file ``path`` is loaded or built in this process."""
+    with _LOCKS_GUARD:
+        return _LOCKS.setdefault(str(Path(path).resolve()), threading.Lock())
+
+
+def _load_or_build(inputs: TableInputs, path: Path, progress: Callable[[int, int], None] | None,
+                   workers: int) -> tuple[SurrogateTable, CacheOutcome]:
     reason = ""
     if path.exists():
         try:

@@ -44,6 +44,7 @@ DIRECT_CHECK_POINTS = 200  # at most this many points get direct solves for the 
 TABLE_ERROR_FRACTION = 0.2  # table-vs-direct error, as a fraction of a point's u, above which the fit warns
 COVARIANCE_FORM = "structured"  # "dense": the N x N Cholesky form (tests compare the two on small data)
 RETRY_NFEV_PER_PARAMETER = 1000  # evaluations of a second attempt when the first's 100 a parameter ran out
+PROFILE_STEPS = 6  # profile values tried between the estimate and a range's end (2, 4, ... 64 u)
 
 
 class FitConvergenceError(ConvergenceError):
@@ -387,11 +388,34 @@ def _profile_interval(residual, x_best, lo, hi, i, chi2_min, label, scale, delta
 
     ends = []
     for bound in (lo[i], hi[i]):
-        if bound == x_best[i] or excess(bound) < 0:
+        inner = x_best[i]
+        for trial in _outward_steps(x_best[i], bound, scale):
+            if excess(trial) >= 0:
+                ends.append((brentq(excess, *sorted((inner, trial)), xtol=_xtol(scale, hi[i] - lo[i])), False))
+                break
+            inner = trial
+        else:
             ends.append((bound, True))
-            continue
-        ends.append((brentq(excess, *sorted((x_best[i], bound)), xtol=_xtol(scale, hi[i] - lo[i])), False))
     return ends[0][0], ends[1][0], ends[0][1], ends[1][1]
+
+
+def _outward_steps(start: float, bound: float, scale: float) -> list[float]:
+    """Where the profile is tried on the way from the estimate ``start`` to ``bound``: 2, 4, 8, ...
+    64 standard uncertainties ``scale`` out (at most PROFILE_STEPS values), the bound last (only
+    the bound when scale is not a positive number; none when start is the bound). The crossing is
+    then bracketed between the last value below the threshold and the first above it, close to
+    the estimate: the profile is not evaluated far out in the range (each value far out costs the
+    forward model's node tables there, rig.fit.forward) when it has crossed within a few u, as it
+    does where the parameter is identifiable (chi2 rises by (x/u)^2: 4 at 2u)."""
+    if bound == start:
+        return []
+    steps = []
+    if np.isfinite(scale) and scale > 0:
+        distance = 2.0 * scale
+        while distance < abs(bound - start) and len(steps) < PROFILE_STEPS:
+            steps.append(start + np.copysign(distance, bound - start))
+            distance *= 2.0
+    return steps + [bound]
 
 
 def _xtol(scale: float, span: float) -> float:

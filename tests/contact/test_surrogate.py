@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import threading
+import time
 import zipfile
 from unittest import mock
 
@@ -225,6 +227,35 @@ def test_cache_hit_does_not_solve(tmp_path):
     assert outcome.status is CacheStatus.HIT
     np.testing.assert_array_equal(second.values, first.values)
     np.testing.assert_array_equal(second.sliding, first.sliding)
+
+
+def test_threads_asking_for_one_table_at_once_build_it_once(tmp_path, monkeypatch):
+    """rig lab prepares its exercises' tables in a thread while a request may ask for the same one:
+    the second caller waits for the first build and loads its file (no second build)."""
+    inputs = _inputs(points=(4, 4, 2))
+    builds, started = [], threading.Event()
+
+    def slow_build(*args, **kwargs):
+        builds.append(threading.current_thread().name)
+        started.set()
+        time.sleep(0.3)  # the other thread asks while this build runs
+        return build_table(*args, **kwargs)
+
+    monkeypatch.setattr(surrogate_cache, "build_table", slow_build)
+    outcomes = {}
+
+    def ask(name):
+        outcomes[name] = load_or_build(inputs, directory=tmp_path)[1].status
+
+    first = threading.Thread(target=ask, args=("first",), name="first")
+    first.start()
+    assert started.wait(10)
+    second = threading.Thread(target=ask, args=("second",), name="second")
+    second.start()
+    first.join(10)
+    second.join(10)
+    assert builds == ["first"]
+    assert outcomes == {"first": CacheStatus.BUILT, "second": CacheStatus.HIT}
 
 
 def test_every_input_changes_the_key(monkeypatch):

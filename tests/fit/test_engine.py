@@ -56,6 +56,18 @@ def test_estimates_u_and_intervals_equal_closed_form_wls(seed):
     assert not result.warnings
 
 
+def test_the_profile_is_computed_near_the_interval_only():
+    """A quadratic chi2 rises 4 > 3.84 at 2u: each crossing is bracketed by the first step out, so no
+    profile value lies beyond 2u of the estimate, though the range reaches 10 / u ~ 200-500 u away
+    (each value far out costs a stand fit's node tables there)."""
+    basis, y, u = _data(1)
+    result = fit(LinearModel(basis, y, u), [0.0, 0.0], polish="never")
+    for e in result.estimates:
+        visited = result.profiles[e.name][:, 0]
+        assert np.all(np.abs(visited - e.value) <= 2 * e.u * (1 + 1e-9)), (e.name, visited)
+        assert e.lo95 < e.value < e.hi95 and not (e.open_lo or e.open_hi)
+
+
 def test_parameter_that_does_not_enter_is_flagged_flat():
     basis, y, u = _data(3, lambda x: np.column_stack([np.ones_like(x), 0.0 * x]))
     result = fit(LinearModel(basis, y, u), [0.0, 0.0], polish="never")

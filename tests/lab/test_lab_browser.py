@@ -19,10 +19,11 @@ from tests.lab.conftest import START_LIMIT_S
 
 OUTPUTS = ("i_k", "l_over_a", "c_over_a", "nu_T", "nu_v", "mu_v", "mu_T")
 WAIT_S = 30.0
+POLL_S = 0.05  # WebDriverWait polls every 0.5 s by default: each wait for the server then cost up to 0.5 s idle
 
 
 def _wait(driver, condition, timeout: float = WAIT_S):
-    return WebDriverWait(driver, timeout).until(condition)
+    return WebDriverWait(driver, timeout, poll_frequency=POLL_S).until(condition)
 
 
 def _attr(driver, element_id: str, name: str) -> str | None:

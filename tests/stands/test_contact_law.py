@@ -203,6 +203,20 @@ def test_direct_and_table_laws_share_one_call_signature(kinematic_table):
     np.testing.assert_allclose(kinematic_table(*between), direct(*between), atol=0.03)
 
 
+def test_direct_law_solves_each_distinct_state_once():
+    """A quasi-static gate evaluates its one steady state at every sample: one solve for each distinct
+    state (0.0 and -0.0 apart), the same values as state by state."""
+    law = _law("kinematic", False)
+    l = np.array([0.3, 0.3, -0.2, 0.3, -0.2, 0.0, -0.0])
+    c = np.array([0.1, 0.1, 0.0, 0.1, 0.0, 0.2, 0.2])
+    alpha = np.full(l.size, 1.5)
+    alone = np.array([law.value_one(*state) for state in zip(l, c, alpha)]).T
+    with mock.patch("rig.stands.contact_law.solve", wraps=solve) as counted:
+        values = law(l, c, alpha)
+    assert counted.call_count == 4
+    np.testing.assert_array_equal(np.array(values), alone)
+
+
 def test_direct_law_derivatives_follow_linear_theory():
     """Linear theory (eq. 4): every coefficient is proportional to the creepage, i.e. to 1/alpha',
     and nu_T = -C11 xi (...) is proportional to l: d nu/d alpha' = -nu/alpha', d nu_T/d(l/a) = nu_T/(l/a)."""
