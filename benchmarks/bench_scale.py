@@ -8,7 +8,8 @@ study scales out on worker processes.
 
 The scene is the built-in `default` (stand A, quasi-static drive, 4 s gates, instruments on)
 with only the sweep's `num` raised (issue 12). Each run is `python -m rig run SCENE -o DIR` in a
-fresh process (imports, the table from a warm cache, the sweep, log, reduction, figure, summary).
+fresh process (imports, the table from a warm cache, the sweep, log, reduction, figure, summary);
+the packages are byte-compiled first, as an installed wheel is (ensure_bytecode).
 Reported per size: median wall time [s] and its spread over the repeats, the time per point
 [ms], the marginal time per point between sizes [ms] (linear growth: the marginal cost does not
 rise with the size), log.h5 [bytes], the raw samples the points really record (dynamometer and
@@ -295,6 +296,22 @@ def ceiling(points: int, repeats: int, gate_time_s: float, folder: Path) -> None
           f"ceiling of a speed-up on 2 workers here is {2 * results[1] / results[2]:.2f}x")
 
 
+PACKAGES = ("rig", "sensors", "paramcheck")
+"""friction-rig's installed packages (pyproject.toml)."""
+
+
+def ensure_bytecode() -> None:
+    """Byte-compile friction-rig's packages, as pip does when it installs the wheel, so that every
+    measured process imports them as from an installed package: where PYTHONDONTWRITEBYTECODE is set
+    (as on the machines this ran on), an editable install's processes would each compile them from
+    source again (about 0.2 s of CPU a process: the parent and every worker)."""
+    import compileall
+    import importlib.util
+
+    for name in PACKAGES:
+        compileall.compile_dir(Path(importlib.util.find_spec(name).origin).parent, quiet=1)
+
+
 def verdict(met: bool) -> str:
     """A budget's verdict as printed."""
     return "met" if met else "NOT met"
@@ -336,6 +353,7 @@ def main() -> int:
     if args.ceiling_child:
         return ceiling_child(args.ceiling_child[0], int(args.ceiling_child[1]))
 
+    ensure_bytecode()
     with tempfile.TemporaryDirectory(prefix="bench_scale_scenes_") as folder:
         warm = scene_file(Path(folder), 3, args.gate_time)
         run_once(warm, 1)  # fills the table cache: every size below runs warm

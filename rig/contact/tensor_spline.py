@@ -17,7 +17,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 # Power-basis coefficients (c0..c3) of the cubic Hermite polynomial from (f0, h f0', f1, h f1').
 _HERMITE = np.array(
@@ -33,6 +32,8 @@ MIN_NODES = 2  # not-a-knot with 2 nodes is the straight line, with 3 the parabo
 
 def slope_matrix(nodes: np.ndarray) -> np.ndarray:
     """D (n, n) with spline slopes at the nodes = D @ node values (not-a-knot cubic spline)."""
+    from scipy.interpolate import CubicSpline  # here: scipy.interpolate costs ~0.4 s to import, a parent need not
+
     n = nodes.size
     return CubicSpline(nodes, np.eye(n), bc_type="not-a-knot").derivative()(nodes)
 

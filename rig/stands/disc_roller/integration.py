@@ -17,7 +17,6 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import Radau, solve_ivp
 
 from rig.errors import ConvergenceError
 from rig.stands.disc_roller.drive_train import DriveTrain
@@ -67,6 +66,8 @@ class Integrator:
 
     def run(self, t0: float, t1: float, y0: np.ndarray, dense: bool = False):
         """solve_ivp result from (t0, y0) to t1 [s]; ConvergenceError if the integrator fails."""
+        from scipy.integrate import solve_ivp  # imported here: ~0.3 s, for integrated drives only
+
         sol = solve_ivp(
             self.train.rhs, (t0, t1), y0, method=METHOD, jac=self.jacobian, rtol=self.rtol, atol=self.atol,
             dense_output=dense, max_step=self.max_step,
@@ -97,6 +98,8 @@ def settle(
     value = residual(0.0, y0)
     below = value < tolerance
     train = integrator.train
+    from scipy.integrate import Radau  # imported here: ~0.3 s, for integrated drives only
+
     solver = Radau(train.rhs, 0.0, y0, timeout, jac=integrator.jacobian, rtol=integrator.rtol, atol=integrator.atol,
                    max_step=integrator.max_step)
     check = interval

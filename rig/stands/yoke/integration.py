@@ -14,7 +14,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import Radau, solve_ivp
 
 from rig.errors import ConvergenceError
 from rig.stands.yoke.drive_train import DriveTrain
@@ -74,6 +73,8 @@ def settle(train: DriveTrain, y0: np.ndarray, target: Target, timeout_s: float,
     Returns with residual > 1 if the timeout [s] is reached first (the caller reports it);
     tolerance_factor multiplies the relative tolerance RTOL (parameter ode_tolerance_factor).
     """
+    from scipy.integrate import Radau  # imported here: ~0.3 s, for integrated drives only
+
     solver = Radau(train.rhs, 0.0, y0, timeout_s, rtol=RTOL * tolerance_factor, atol=atol(train), jac=train.jacobian,
                    max_step=SETTLE_WINDOW_S / 3.0)
     times, states = [0.0], [np.array(y0, dtype=float)]
@@ -105,6 +106,8 @@ def gate(train: DriveTrain, t0: float, y0: np.ndarray, duration: float,
     tolerance_factor multiplies RTOL_GATE."""
     n = max(int(np.ceil(duration * GATE_SAMPLE_RATE_HZ)), 2) + 1
     t_eval = np.linspace(t0, t0 + duration, n)
+    from scipy.integrate import solve_ivp  # imported here: ~0.3 s, for integrated drives only
+
     sol = solve_ivp(train.rhs, (t0, t0 + duration), y0, method="Radau", t_eval=t_eval, rtol=RTOL_GATE * tolerance_factor,
                     atol=atol(train), jac=train.jacobian, max_step=duration)
     if sol.status != 0:
