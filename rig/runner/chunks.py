@@ -9,8 +9,9 @@ in a temporary file of the worker's machine) and reduces that shard with the sta
 the rows the whole log's reduction gives). It returns a :class:`ChunkResult`: the shard's bytes, the
 reduced rows (also as lines of reduced.csv), the points that did not settle, an error. The parent
 only stores the shard, keeps the rows and, at the end, merges the shards into ``log.h5``: its work
-per point is a few copies, not a simulation, a reduction or the formatting of numbers. A task may also be the reduction of a shard an interrupted run left
-(:class:`ReduceTask`), so that a resumed run reduces those points on the workers too.
+per point is a few copies, not a simulation, a reduction or the formatting of numbers. A task may
+also be the reduction of a shard an interrupted run left (:class:`ReduceTask`), so that a resumed
+run reduces those points on the workers too.
 
 Each point's truth gets one entry from the operator: ``operator_settle_time`` [s], the simulated
 time the point took to settle as ``settle`` reported it.
