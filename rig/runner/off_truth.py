@@ -54,8 +54,11 @@ def with_z_max(table: pd.DataFrame) -> pd.DataFrame:
     """``table`` with ``z_max``, each point's largest z [1], as its last column when it has truth
     columns (unchanged otherwise). A row's z_max depends on that row only."""
     zs = z_table(table)
-    if zs.empty:  # no truth columns, or no rows
-        return table
+    return table if zs.empty else _with_z_max(table, zs)  # empty: no truth columns, or no rows
+
+
+def _with_z_max(table: pd.DataFrame, zs: pd.DataFrame) -> pd.DataFrame:
+    """A copy of ``table`` with the z_max of ``zs`` (z_table(table)) as its last column."""
     table = table.drop(columns="z_max") if "z_max" in table else table.copy()
     table["z_max"] = zs.max(axis=1, skipna=True).to_numpy(dtype=float)
     if isinstance(table.attrs.get("units"), dict):
@@ -70,7 +73,7 @@ def with_off_truth(table: pd.DataFrame) -> pd.DataFrame:
     if zs.empty:  # no truth columns, or no rows
         return table
     threshold = off_truth_threshold(int(np.isfinite(zs.to_numpy()).sum()))
-    table = with_z_max(table.drop(columns="off_truth") if "off_truth" in table else table)
+    table = _with_z_max(table.drop(columns="off_truth") if "off_truth" in table else table, zs)
     z_max = table["z_max"].to_numpy()
     table["off_truth"] = np.where(np.isfinite(z_max), (z_max > threshold).astype(float), np.nan)
     table.attrs["off_truth_z"] = threshold

@@ -169,9 +169,10 @@ def run_sharded_sweep(scene: StandScene, stand: Stand, points: Sequence[PlannedP
             for index, settings, message in done.failures:
                 result.failures.append(Failure(index, settings, message))
             if done.table is not None:
-                result.tables[done.written[0] if done.written else done.first] = done.table
+                first = done.written[0] if done.written else done.first
+                result.tables[first] = done.table
                 if gatherer is not None:
-                    gatherer.add(done.written[0] if done.written else done.first, done.table, done.rows)
+                    gatherer.add(first, done.table, done.rows)
             bar.update(len(done.written) + len(done.failures))
             if done.stopped:
                 result.stopped, result.stopped_at = True, done.failures[-1][0]
