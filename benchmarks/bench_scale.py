@@ -3,7 +3,8 @@ study scales out on worker processes.
 
     python benchmarks/bench_scale.py [--points 100 1600 10000] [--repeats 1] [--jobs 1] [--gate-time 4.0]
                                      [--study 100000] [--study-workers 2] [--scaling 10000]
-                                     [--scaling-runs j1 j2 cluster] [--scaling-repeats 1] [--peak-memory]
+                                     [--scaling-runs j1 j2 cluster [cluster-defaults]] [--scaling-repeats 1]
+                                     [--peak-memory]
                                      [--ceiling 256]
 
 The scene is the built-in `default` (stand A, quasi-static drive, 4 s gates, instruments on)
@@ -35,8 +36,9 @@ workers, wall(p) = total CPU (s + (1 - s)/p); the speed-up of ``-j 2`` and of th
 ``-j 1`` measured in the same run, and the load average before each run. ``--scaling-repeats R``
 runs the three R times in turn and states the median speed-up and serial fraction (the machine's
 own speed drifts by some 10 % between minutes; a round's three runs share it). ``--peak-memory`` adds
-the parent's peak resident memory [MB] of each run (ru_maxrss). The cluster's workers run with
-Dask's statistical profiler off (WORKER_CONFIG, as docs/scaling.md advises).
+the parent's peak resident memory [MB] of each run (ru_maxrss). The LocalCluster is made as
+docs/scaling.md advises for studies (rig.runner.dask_pool.study_cluster: Dask's profiler off, its
+monitors slowed down); ``--scaling-runs ... cluster-defaults`` adds one with Dask's defaults.
 
 ``--ceiling N`` measures what two processes can gain on this machine at most: a chunk of N points
 simulated, logged and reduced as a worker does it (no pool, no cluster, no parent), repeated, in
@@ -125,19 +127,16 @@ def run_once(scene: Path, jobs: int, extra: list[str] | None = None) -> dict[str
     return {"wall": wall, "cpu": cpu, "load": load, "size": size, "raw": raw, "frames": frames}
 
 
-WORKER_CONFIG = {"distributed.worker.profile.enabled": False}
-"""The LocalCluster's workers as docs/scaling.md advises for a study: Dask's statistical profiler
-off (it samples the running task's stack every 10 ms on the worker's event loop: 0.45-0.56 s of a
-worker's CPU per 10 s of a chunk against 0.19-0.23 s without it, measured side by side)."""
-
-
-def local_cluster(workers: int):
-    """A LocalCluster of ``workers`` one-thread worker processes configured as WORKER_CONFIG."""
-    import dask
+def local_cluster(workers: int, study: bool = True):
+    """A LocalCluster of ``workers`` one-thread worker processes: with the study configuration
+    (rig.runner.dask_pool.study_cluster, as docs/scaling.md advises), or with Dask's defaults."""
     from distributed import LocalCluster
 
-    with dask.config.set(WORKER_CONFIG):  # the nannies hand the configuration to their worker processes
-        return LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None)
+    from rig.runner.dask_pool import study_cluster
+
+    if study:
+        return study_cluster(workers)
+    return LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None)
 
 
 def dask_run(scene: Path, workers: int) -> dict[str, float]:
@@ -202,7 +201,8 @@ def amdahl_wall(total_cpu: float, serial: float, workers: int) -> float:
     return total_cpu * (serial + (1.0 - serial) / workers)
 
 
-SCALING_RUNS = {"j1": "-j 1", "j2": "-j 2", "cluster": "LocalCluster 2 workers"}
+SCALING_RUNS = {"j1": "-j 1", "j2": "-j 2", "cluster": "LocalCluster 2 workers",
+                "cluster-defaults": "LocalCluster, Dask defaults"}
 
 
 def scaling(points: int, gate_time_s: float, folder: Path, peak_memory: bool, which: list[str], repeats: int = 1) -> None:
@@ -217,24 +217,26 @@ def scaling(points: int, gate_time_s: float, folder: Path, peak_memory: bool, wh
             runs["-j 1"] = scaling_run(scene, "1")
         if "j2" in which:
             runs["-j 2"] = scaling_run(scene, "2")
-        if "cluster" in which:
-            from distributed import Client
+        for key in ("cluster", "cluster-defaults"):
+            if key in which:
+                from distributed import Client
 
-            with local_cluster(2) as cluster, Client(cluster.scheduler_address, set_as_default=False) as client:
-                runs["LocalCluster 2 workers"] = scaling_run(scene, cluster.scheduler_address, client)
+                with local_cluster(2, study=key == "cluster") as cluster, \
+                        Client(cluster.scheduler_address, set_as_default=False) as client:
+                    runs[SCALING_RUNS[key]] = scaling_run(scene, cluster.scheduler_address, client)
         rounds.append(runs)
     print(f"\nscaling: {points} points, the default scene (gate {gate_time_s:g} s); parent = the process that runs "
           f"the study, workers = the pool's processes or the cluster's workers; {repeats} round(s)")
-    print(f"{'round':>5} {'run':>24} {'wall [s]':>9} {'load':>5} {'parent [ms/pt]':>14} {'workers [ms/pt]':>15} "
+    print(f"{'round':>5} {'run':>27} {'wall [s]':>9} {'load':>5} {'parent [ms/pt]':>14} {'workers [ms/pt]':>15} "
           f"{'total [ms/pt]':>13} {'serial s':>8} {'speed-up':>8}" + (f" {'peak [MB]':>9}" if peak_memory else ""))
     for k, runs in enumerate(rounds, 1):
         base = runs["-j 1"]["wall"] if "-j 1" in runs else math.nan
         for label, run in runs.items():
             total = run["parent"] + run["workers"]
-            print(f"{k:>5} {label:>24} {run['wall']:>9.2f} {run['load']:>5.2f} {1e3 * run['parent'] / points:>14.3f} "
+            print(f"{k:>5} {label:>27} {run['wall']:>9.2f} {run['load']:>5.2f} {1e3 * run['parent'] / points:>14.3f} "
                   f"{1e3 * run['workers'] / points:>15.3f} {1e3 * total / points:>13.3f} {run['parent'] / total:>8.4f} "
                   f"{base / run['wall']:>7.2f}x" + (f" {run['maxrss_MB']:>9.0f}" if peak_memory else ""))
-    for label in [label for label in ("-j 2", "LocalCluster 2 workers") if label in rounds[0]]:
+    for label in [SCALING_RUNS[key] for key in ("j2", "cluster", "cluster-defaults") if SCALING_RUNS[key] in rounds[0]]:
         serials = [runs[label]["parent"] / (runs[label]["parent"] + runs[label]["workers"]) for runs in rounds]
         speedups = [runs["-j 1"]["wall"] / runs[label]["wall"] if "-j 1" in runs else math.nan for runs in rounds]
         serial, speedup = statistics.median(serials), statistics.median(speedups)
@@ -339,8 +341,9 @@ def main() -> int:
     parser.add_argument("--peak-memory", action="store_true", help="print the parent's peak memory of each --scaling run")
     parser.add_argument("--scaling-repeats", type=int, default=1,
                         help="rounds of the --scaling runs (speed-ups per round, then their median; default 1)")
-    parser.add_argument("--scaling-runs", nargs="+", choices=sorted(SCALING_RUNS), default=list(SCALING_RUNS),
-                        help="which --scaling runs (default: all three)")
+    parser.add_argument("--scaling-runs", nargs="+", choices=sorted(SCALING_RUNS), default=["j1", "j2", "cluster"],
+                        help="which --scaling runs (default: -j 1, -j 2 and the LocalCluster with the study "
+                             "configuration; cluster-defaults: a LocalCluster with Dask's default configuration)")
     parser.add_argument("--ceiling", type=int, default=0, metavar="POINTS",
                         help="also measure the ceiling of two processes: a chunk of POINTS points in 1 process, "
                              "then in 2 at once")

@@ -16,8 +16,9 @@ the records the serial run holds), then keeps it for the run's further points. S
 once - for the last MAX_CACHED_RUNS runs only.
 
 dask and distributed are the optional extra ``dask``: they are imported when a sweep is sent to
-a scheduler, never on import of rig; without them, a ParameterError names the extra and the
-install command. The workers must import the same friction-rig version as the client (the log
+a scheduler (or a cluster is made with :func:`study_cluster`), never on import of rig; without
+them, a ParameterError names the extra and the install command. :data:`STUDY_CONFIG` is the Dask
+configuration a cluster that runs studies should start with (docs/scaling.md). The workers must import the same friction-rig version as the client (the log
 records the client's version; a worker with another one fails the point) and the stand's module
 by its path. The logbook's read-only records (types.MappingProxyType), which pickle refuses,
 travel by cloudpickle, distributed's fallback serializer, and arrive as read-only mappings.
@@ -31,6 +32,7 @@ from collections import OrderedDict
 from collections.abc import Callable, Sequence
 
 import rig
+from rig import validate
 from rig.errors import ParameterError
 from rig.runner.pool import WorkerError
 from rig.scenes.stand_scene import StandScene
@@ -48,6 +50,26 @@ CONNECT_TIMEOUT_S = 30.0
 MAX_CACHED_RUNS = 2
 """A worker keeps the calibrated stands of this many most recent runs."""
 
+STUDY_CONFIG: dict[str, object] = {
+    "distributed.worker.profile.enabled": False,
+    "distributed.admin.tick.interval": "1s",
+    "distributed.admin.system-monitor.interval": "5s",
+    "distributed.worker.memory.monitor-interval": "1s",
+}
+"""Dask settings for the scheduler, nannies and workers of a cluster that runs studies: Dask's
+statistical profiler off (it samples a running task's stack every 10 ms) and its monitors slowed
+down - the event-loop health check from every 20 ms to every 1 s, the system monitor from every
+0.5 s to every 5 s, the nanny's and worker's memory check from every 0.1 s to every 1 s. Each wakes
+the worker's event loop, which then takes the interpreter from the task's thread. Measured on two
+workers with 2 000 points each (benchmarks/bench_scale.py, docs/scaling.md): the workers' own Dask
+threads 0.5-0.7 % of a busy worker's CPU instead of 2.1-2.4 %, the task's thread kept waiting
+0.4-0.6 s instead of 1.0-1.1 s, the scheduler and nannies 0.2 s of CPU instead of 0.8-1.0 s.
+Results do not depend on it; the costs are a coarser dashboard and a memory limit enforced within
+1 s instead of 0.1 s."""
+
+MAX_WORKERS = 256
+"""Most worker processes of a :func:`study_cluster` [1] (the most ``--jobs`` of a local pool)."""
+
 _stands: OrderedDict[str, dict[int, Stand]] = OrderedDict()  # run token -> {thread id: stand}
 _stands_lock = threading.Lock()
 
@@ -63,19 +85,35 @@ def check_scheduler(address: object, jobs: int) -> str:
     if jobs != 1:
         raise ParameterError("jobs", jobs, "1 with a Dask scheduler (its workers set the parallelism)",
                              hint=f"scheduler = {address!r}; drop --jobs or the scheduler")
-    _client_class(address)
+    _distributed("scheduler", address)
     return address
 
 
-def _client_class(address: str) -> type:
-    """distributed.Client, imported now; ParameterError naming the extra if it is not installed."""
+def _distributed(name: str, value: object):
+    """The distributed package, imported now; ParameterError naming ``name`` and the extra if it is
+    not installed."""
     try:
-        from distributed import Client
+        import distributed
     except ImportError as error:
         missing = error.name or "distributed"
-        raise ParameterError("scheduler", address, f"an address used with the optional {EXTRA!r} extra installed",
+        raise ParameterError(name, value, f"a value used with the optional {EXTRA!r} extra installed",
                              hint=f"{missing} is not installed; install the extra with: {INSTALL}") from None
-    return Client
+    return distributed
+
+
+def study_cluster(workers: int, **options):
+    """A distributed.LocalCluster on this machine made for studies: ``workers`` worker processes of one
+    thread each (a point is CPU-bound Python), started with :data:`STUDY_CONFIG`, no dashboard;
+    ``options`` go to LocalCluster (e.g. ``env``, ``dashboard_address``). Use it as a context manager
+    and pass its ``scheduler_address`` as ``scheduler`` (rig.run, ``rig run --scheduler``)."""
+    workers = validate.integer("workers", workers, 1, MAX_WORKERS)
+    _distributed("workers", workers)
+    import dask
+    from distributed import LocalCluster
+
+    options = {"threads_per_worker": 1, "processes": True, "dashboard_address": None, **options}
+    with dask.config.set(STUDY_CONFIG):  # read when the scheduler, nannies and workers start
+        return LocalCluster(n_workers=workers, **options)
 
 
 def _stand_for(run: str, scene: StandScene) -> Stand:
@@ -150,7 +188,7 @@ def run_dask_tasks(scene: StandScene, make_tasks: Callable[[int], Sequence], add
 
 def _connect(address: str):
     """A distributed.Client of the scheduler at ``address`` (not made the default client)."""
-    client_class = _client_class(address)
+    client_class = _distributed("scheduler", address).Client
     try:
         return client_class(address, timeout=CONNECT_TIMEOUT_S, set_as_default=False)
     except (OSError, TimeoutError, ValueError) as error:

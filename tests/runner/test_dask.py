@@ -1,7 +1,8 @@
 """The Dask path (``--scheduler``) and a process pool (``-j 2``) give the log and reduced table of a
 one-process run, also after a kill at a random moment and a rerun.
 
-One LocalCluster (2 worker processes, 1 thread each) serves the module. The reference is always a
+One LocalCluster (rig.runner.dask_pool.study_cluster: 2 worker processes, 1 thread each, the
+study configuration) serves the module. The reference is always a
 ``jobs`` = 1 run of the same seeded scene in another folder: logs are compared by content
 (records, truth, metadata but the start time), reduced.csv by text. Scenes: the fake stand of
 tests/runner/fake_stand.py (with two points that do not settle) and a short stand-A scene. The
@@ -12,6 +13,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 import random
 import signal
 import subprocess
@@ -23,10 +25,11 @@ from concurrent.futures import ThreadPoolExecutor
 from unittest import mock
 
 import h5py
+import dask
 import numpy as np
 import pandas as pd
 import pytest
-from distributed import Client, LocalCluster
+from distributed import Client
 
 import rig.runner.chunks
 import rig.runner.dask_pool
@@ -74,8 +77,7 @@ def _cached_calibrations() -> list[list[int]]:
 @pytest.fixture(scope="module")
 def scheduler(tmp_path_factory):
     cache = tmp_path_factory.mktemp("rig_cache")
-    with LocalCluster(n_workers=2, processes=True, threads_per_worker=1, dashboard_address=":0",
-                      env={"RIG_CACHE_DIR": str(cache)}) as cluster:
+    with rig.runner.dask_pool.study_cluster(2, dashboard_address=":0", env={"RIG_CACHE_DIR": str(cache)}) as cluster:
         yield cluster.scheduler_address
 
 
@@ -282,6 +284,47 @@ def test_a_scheduler_with_a_characteristics_scene_is_refused(tmp_path):
     scene = load_scene("contact_characteristics")
     with pytest.raises(ParameterError, match="scheduler = 'tcp://127.0.0.1:8786' .* \\(only a stand scene"):
         run_scene(scene, tmp_path / "run", scheduler="tcp://127.0.0.1:8786", progress=False)
+
+
+def _settings(keys) -> dict:
+    """On a worker or the scheduler: those Dask settings as that process holds them."""
+    return {key: dask.config.get(key) for key in keys}
+
+
+def _tick_ms(dask_worker=None, dask_scheduler=None) -> float:
+    """On a worker or the scheduler: the interval of its running event-loop check [ms]."""
+    return (dask_worker or dask_scheduler).periodic_callbacks["tick"].callback_time
+
+
+def test_the_study_cluster_starts_every_process_with_the_study_config(scheduler):
+    study = rig.runner.dask_pool.STUDY_CONFIG
+    with Client(scheduler, set_as_default=False) as client:
+        workers = client.run(_settings, list(study))
+        ticks = [*client.run(_tick_ms).values(), client.run_on_scheduler(_tick_ms)]
+    assert len(workers) == 2 and all(held == study for held in workers.values())
+    assert ticks == [1000.0] * 3  # the running processes, not only their configuration (Dask's default: 20 ms)
+
+
+def test_every_study_setting_is_a_dask_setting_it_changes():
+    defaults = dask.config.merge(*dask.config.defaults)  # Dask's own defaults, without this machine's files
+    for key, value in rig.runner.dask_pool.STUDY_CONFIG.items():
+        assert dask.config.get(key, config=defaults) != value, key  # a renamed key would change nothing
+
+
+def test_the_docs_start_workers_with_the_study_config():
+    """docs/scaling.md's ``DASK_...=...`` variables for ``dask worker`` are STUDY_CONFIG, read as Dask reads them."""
+    text = (REPO / "docs" / "scaling.md").read_text(encoding="utf-8")
+    variables = dict(re.findall(r"\b(DASK_[A-Z_]+)=(\S+)", text))
+    documented = dask.config.collect_env(variables)
+    assert {key: dask.config.get(key, config=documented) for key in rig.runner.dask_pool.STUDY_CONFIG} == \
+        rig.runner.dask_pool.STUDY_CONFIG
+    assert len(variables) == len(rig.runner.dask_pool.STUDY_CONFIG)
+
+
+@pytest.mark.parametrize("workers", [0, 257, 1.5, "2"])
+def test_a_study_cluster_of_a_bad_size_is_refused(workers):
+    with pytest.raises(ParameterError, match=r"workers = .* a whole number in \[1, 256\]"):
+        rig.runner.dask_pool.study_cluster(workers)
 
 
 def test_rig_does_not_import_dask_unless_asked():
