@@ -5,7 +5,7 @@ study scales out on worker processes.
                                      [--study 100000] [--study-workers 2] [--scaling 10000]
                                      [--scaling-runs j1 j2 cluster [cluster-defaults]] [--scaling-repeats 1]
                                      [--peak-memory]
-                                     [--ceiling 256]
+                                     [--ceiling 256] [--dask-overhead 200 [--dask-overhead-rounds 2]]
 
 The scene is the built-in `default` (stand A, quasi-static drive, 4 s gates, instruments on)
 with only the sweep's `num` raised (issue 12). Each run is `python -m rig run SCENE -o DIR` in a
@@ -46,6 +46,12 @@ one process alone and then in two processes at once; it prints the CPU time per 
 (equal when two busy cores do not slow each other down) and the speed-up of two processes over
 one, the ceiling of the ``-j 2`` and cluster speed-ups (which add the parent's serial part and
 the workers' start).
+
+``--dask-overhead N`` measures what Dask's own activity costs a busy worker: the same chunk work
+on each worker of a two-worker LocalCluster at once, with the study configuration
+(rig.runner.dask_pool.STUDY_CONFIG) and with Dask's defaults, alternating; per worker the share
+of its CPU outside the task's thread (Dask's threads) and how long the task's thread waited
+(wall time - its CPU time), and the CPU time of the scheduler and the nannies.
 """
 
 from __future__ import annotations
@@ -251,12 +257,10 @@ def scaling(points: int, gate_time_s: float, folder: Path, peak_memory: bool, wh
               f"Amdahl: {projection}")
 
 
-def ceiling_child(scene: str, repeats: int) -> int:
-    """In a fresh process (``--ceiling-child``): simulate, log and reduce the scene's points as one
-    chunk (rig.runner.chunks, as a worker does) once to warm up, then ``repeats`` times; print the
-    CPU time and the wall time [s] of the repeats as one line of JSON."""
-    import json
-
+def chunk_work(scene: str, repeats: int) -> dict[str, float]:
+    """Simulate, log and reduce the scene's points as one chunk (rig.runner.chunks, as a worker does)
+    once to warm up, then ``repeats`` times: the repeats' CPU time of this process and of this thread,
+    and their wall time [s]."""
     from rig.logbook import RunMetadata, utc_timestamp
     from rig.runner.chunks import SimulateTask, run_task
     from rig.scenes import load_scene
@@ -267,11 +271,47 @@ def ceiling_child(scene: str, repeats: int) -> int:
     task = SimulateTask(tuple(loaded.procedure.points()),
                         RunMetadata(loaded.text, loaded.seed, loaded.stand, utc_timestamp()), True)
     run_task(stand, loaded, task)
-    cpu, wall = time.process_time(), time.perf_counter()
+    cpu, thread, wall = time.process_time(), time.thread_time(), time.perf_counter()
     for _ in range(repeats):
         run_task(stand, loaded, task)
-    print(json.dumps({"cpu": time.process_time() - cpu, "wall": time.perf_counter() - wall}))
+    return {"cpu": time.process_time() - cpu, "thread": time.thread_time() - thread, "wall": time.perf_counter() - wall}
+
+
+def ceiling_child(scene: str, repeats: int) -> int:
+    """In a fresh process (``--ceiling-child``): chunk_work, printed as one line of JSON."""
+    import json
+
+    print(json.dumps(chunk_work(scene, repeats)))
     return 0
+
+
+def dask_overhead(points: int, repeats: int, rounds: int, gate_time_s: float, folder: Path) -> None:
+    """What Dask's own activity costs a study's workers: on a two-worker LocalCluster with the study
+    configuration and on one with Dask's defaults (alternating, ``rounds`` times), each worker runs
+    chunk_work (a chunk of ``points`` points, ``repeats`` times) at once; per worker, the share of its
+    process's CPU spent outside the task's thread (Dask's threads) and the time the task's thread
+    waited (wall - its CPU: for the interpreter or a core) [s]; and the CPU of the scheduler and the
+    nannies (this process) [s]."""
+    from distributed import Client
+
+    scene = str(scene_file(folder, points, gate_time_s))
+    print(f"\nDask's own cost: a chunk of {points} points x {repeats} on each of two workers at once, {rounds} round(s)")
+    print(f"{'round':>5} {'cluster':>14} {'load':>5} {'Dask threads [% of a worker]':>29} {'task waited [s]':>16} "
+          f"{'scheduler + nannies [s]':>23}")
+    for k in range(1, rounds + 1):
+        for study in (True, False):
+            load = os.getloadavg()[0]
+            with local_cluster(2, study=study) as cluster, Client(cluster.scheduler_address, set_as_default=False) as client:
+                before = resource.getrusage(resource.RUSAGE_SELF)
+                futures = [client.submit(chunk_work, scene, repeats, workers=[address], pure=False)
+                           for address in client.nthreads()]
+                runs = client.gather(futures)
+                after = resource.getrusage(resource.RUSAGE_SELF)
+            own = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+            threads = ", ".join(f"{100 * (run['cpu'] - run['thread']) / run['cpu']:.2f}" for run in runs)
+            waited = ", ".join(f"{run['wall'] - run['thread']:.2f}" for run in runs)
+            label = "study" if study else "Dask defaults"
+            print(f"{k:>5} {label:>14} {load:>5.2f} {threads:>29} {waited:>16} {own:>23.2f}")
 
 
 def ceiling(points: int, repeats: int, gate_time_s: float, folder: Path) -> None:
@@ -347,7 +387,13 @@ def main() -> int:
     parser.add_argument("--ceiling", type=int, default=0, metavar="POINTS",
                         help="also measure the ceiling of two processes: a chunk of POINTS points in 1 process, "
                              "then in 2 at once")
-    parser.add_argument("--ceiling-repeats", type=int, default=10, help="repeats of the --ceiling chunk (default 10)")
+    parser.add_argument("--ceiling-repeats", type=int, default=10,
+                        help="repeats of the --ceiling and --dask-overhead chunk (default 10)")
+    parser.add_argument("--dask-overhead", type=int, default=0, metavar="POINTS",
+                        help="also measure Dask's own cost on its workers: a chunk of POINTS points on each of two "
+                             "workers, with the study configuration and with Dask's defaults")
+    parser.add_argument("--dask-overhead-rounds", type=int, default=2,
+                        help="alternating rounds of --dask-overhead (default 2)")
     parser.add_argument("--ceiling-child", nargs=2, metavar=("SCENE", "REPEATS"), help=argparse.SUPPRESS)
     parser.add_argument("--child", nargs=3, metavar=("SCENE", "OUT", "WHERE"), help=argparse.SUPPRESS)
     args = parser.parse_args()
@@ -388,6 +434,9 @@ def main() -> int:
             print(study_line(f"-j {args.study_workers}", args.study, run_once(scene, args.study_workers)))
         if args.ceiling:
             ceiling(args.ceiling, args.ceiling_repeats, args.gate_time, Path(folder))
+        if args.dask_overhead:
+            dask_overhead(args.dask_overhead, args.ceiling_repeats, args.dask_overhead_rounds, args.gate_time,
+                          Path(folder))
         if args.scaling:
             scaling(args.scaling, args.gate_time, Path(folder), args.peak_memory, args.scaling_runs,
                     args.scaling_repeats)

@@ -18,10 +18,11 @@ once - for the last MAX_CACHED_RUNS runs only.
 dask and distributed are the optional extra ``dask``: they are imported when a sweep is sent to
 a scheduler (or a cluster is made with :func:`study_cluster`), never on import of rig; without
 them, a ParameterError names the extra and the install command. :data:`STUDY_CONFIG` is the Dask
-configuration a cluster that runs studies should start with (docs/scaling.md). The workers must import the same friction-rig version as the client (the log
-records the client's version; a worker with another one fails the point) and the stand's module
-by its path. The logbook's read-only records (types.MappingProxyType), which pickle refuses,
-travel by cloudpickle, distributed's fallback serializer, and arrive as read-only mappings.
+configuration a cluster that runs studies should start with (docs/scaling.md). The workers must
+import the same friction-rig version as the client (the log records the client's version; a
+worker with another one fails the point) and the stand's module by its path. The logbook's
+read-only records (types.MappingProxyType), which pickle refuses, travel by cloudpickle,
+distributed's fallback serializer, and arrive as read-only mappings.
 """
 
 from __future__ import annotations
@@ -34,7 +35,7 @@ from collections.abc import Callable, Sequence
 import rig
 from rig import validate
 from rig.errors import ParameterError
-from rig.runner.pool import WorkerError
+from rig.runner.pool import MAX_WORKERS, WorkerError
 from rig.scenes.stand_scene import StandScene
 from rig.stands.base import Stand
 
@@ -66,9 +67,6 @@ threads 0.5-0.7 % of a busy worker's CPU instead of 2.1-2.4 %, the task's thread
 0.4-0.6 s instead of 1.0-1.1 s, the scheduler and nannies 0.2 s of CPU instead of 0.8-1.0 s.
 Results do not depend on it; the costs are a coarser dashboard and a memory limit enforced within
 1 s instead of 0.1 s."""
-
-MAX_WORKERS = 256
-"""Most worker processes of a :func:`study_cluster` [1] (the most ``--jobs`` of a local pool)."""
 
 _stands: OrderedDict[str, dict[int, Stand]] = OrderedDict()  # run token -> {thread id: stand}
 _stands_lock = threading.Lock()

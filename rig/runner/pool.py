@@ -68,6 +68,10 @@ class PointFailure:
                            f"{self.message}\n{self.trace}")
 
 
+MAX_WORKERS = 256
+"""Most worker processes of a run [1]: a local pool's ``--jobs``, a study_cluster's workers
+(rig.runner.dask_pool)."""
+
 _worker: dict = {}
 
 TASKS_AHEAD = 3

@@ -43,7 +43,7 @@ from rig.runner.folder_lock import folder_lock
 from rig.runner.off_truth import off_truth_points
 from rig.runner.outputs import (REDUCED_FIGURE, REDUCED_ROWS_NAME, STAND_KIND, SUMMARY_NAME, claim_folder,
                                 output_folder, remove_stale, staged_outputs)
-from rig.runner.pool import WorkerError
+from rig.runner.pool import MAX_WORKERS, WorkerError
 from rig.runner.reduction import (FormattedRows, Reduction, gathered_table, read_truth_if_any, reduce_to_files,
                                   table_to_files)
 from rig.runner.summary import RunFacts, summary_text
@@ -54,7 +54,7 @@ from rig.scenes.stand_scene import StandScene
 from rig.stands.base import Stand
 
 LOG_NAME = "log.h5"
-MAX_JOBS = 256
+MAX_JOBS = MAX_WORKERS
 
 
 @dataclass(frozen=True)
