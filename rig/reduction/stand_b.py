@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 
 from rig import validate
@@ -173,8 +173,22 @@ def reduce(
     the reading cannot exclude mu there). With two or more, the next significant estimate whose own
     equation has exactly one root and no such turning point drives alpha' instead (mu_T from F_T,
     mu_M from M_C); failing that, :func:`choose_root` keeps the root the other estimates agree with,
-    or reports the driven outputs as NaN naming the roots. The returned point's ``note`` says which
-    (empty when the root is unique): a non-unique mu is never resolved silently.
+    or reports the driven outputs as NaN naming the roots.
+
+    One root is checked too, where a root could hide from the reading: when the driver's ratio has a
+    turning point in the bracket (a peak below the reading, a trough above it, z_t standard
+    uncertainties away, :func:`driver_roots`), the other significant estimates are compared with the
+    driver at the reduced point (:func:`_difference_z`, covariance-aware). If one differs by z >
+    DISCRIMINATION_Z and some turning point has z_t < z (the reading being z_t u off is likelier than
+    that disagreement by chance; a turning point of unknown u counts), the root is contradicted: the
+    note says so ("one root: mu_v = 0.52, but mu_M = 1.63 differs by z = 11.9: a root the reading
+    cannot show (a turning point of F_V/F_N at mu = 1.45, 2.9 u from the reading) may hold the
+    truth"), and as with two roots the next significant estimate whose equation has exactly one root
+    and no near turning point drives alpha' instead; failing that, the driven outputs are NaN with
+    that reason (the contradicted root is not reported). With no turning point in the bracket the
+    ratio is monotone, no other root can hide, and a disagreement is the readings' or the model's,
+    not the root's: no check. The returned point's ``note`` says which (empty when the root is
+    unique and uncontradicted): a non-unique mu is never resolved silently.
     """
     geometry = StandBGeometry() if geometry is None else geometry
     settings = ReductionSettings() if settings is None else settings
@@ -197,23 +211,84 @@ def reduce(
 
     found = roots_of(driver)
     roots = found.candidates
+
+    def another_drives(head: str) -> tuple[ReducedPoint | None, list[str]]:
+        """(the point driven by the first other significant estimate whose equation has exactly one
+        root and no turning point within ``significance`` u of its reading, noted, or None; why the
+        others tried could not drive)."""
+        why = []
+        for other in (name for name in drivers if name != driver):
+            other_roots = roots_of(other)
+            unique = other_roots.exact
+            if len(unique) != 1 or other_roots.near:
+                why.append(roots_text(other, other_roots.candidates, other_roots.near) if other_roots.candidates
+                           else f"{other}: no root")
+                continue
+            alternative = reduce_stand_point(evaluate, inputs, numerators, GUARDS, DRIVEN,
+                                             dataclasses.replace(settings, mu_start=unique[0]), driver=other,
+                                             **chain)
+            if alternative.driver == other and math.isfinite(alternative.values[other]):
+                return dataclasses.replace(alternative, note=f"{head}; {other} (one root, {unique[0]:.2f}) "
+                                           "drives alpha' instead"), why
+            why.append(f"{other}: {alternative.reasons.get(other) or 'does not reduce'}")
+        return None, why
+
+    if len(found.exact) == 1 and len(roots) == 1 and found.turning and point.driver == driver:
+        against = contradictions(point, driver, (name for name in drivers if name != driver))
+        # a root hides behind a turning point only if the reading is z_t u off: likelier than a z u
+        # disagreement by chance when z_t < z (a turning point of unknown u counts)
+        hiding = {mu: z for mu, z in found.turning.items() if against and not z >= max(against.values())}
+        if not hiding:
+            return dataclasses.replace(point, note="")
+        head = one_root_text(driver, roots[0], point, against, hiding)
+        alternative, why = another_drives(head)
+        return alternative or without_driven(point, head, f"{head}; no other estimate can drive alpha' instead "
+                                             f"({'; '.join(why) or 'none is significant'})")
     if len(roots) < 2:
         return dataclasses.replace(point, note="")
     head = roots_text(driver, roots, found.near)
-    for other in (name for name in drivers if name != driver):  # a reading whose equation has one root
-        other_roots = roots_of(other)
-        unique = other_roots.exact
-        if len(unique) != 1 or other_roots.near:
-            continue
-        alternative = reduce_stand_point(evaluate, inputs, numerators, GUARDS, DRIVEN,
-                                         dataclasses.replace(settings, mu_start=unique[0]), driver=other, **chain)
-        if alternative.driver == other and math.isfinite(alternative.values[other]):
-            return dataclasses.replace(alternative, note=f"{head}; {other} (one root, {unique[0]:.2f}) drives "
-                                       "alpha' instead")
+    alternative, _ = another_drives(head)
+    if alternative is not None:
+        return alternative
     at_roots = [reduce_stand_point(evaluate, inputs, numerators, GUARDS, DRIVEN,
                                    dataclasses.replace(settings, mu_start=root), driver=driver, **chain)
                 for root in roots]
     return choose_root(driver, roots, at_roots, found.near)
+
+
+RATIO_OF = {"mu_v": "F_V/F_N", "mu_T": "F_T/F_N", "mu_M": "M_C/(a F_N)"}  # the ratio each estimate inverts
+
+
+def contradictions(point: ReducedPoint, driver: str, others: Iterable[str]) -> dict[str, float]:
+    """{other: z} [1] of the estimates that differ from the driver's at the reduced point by
+    z > DISCRIMINATION_Z standard uncertainties of the difference (:func:`_difference_z`)."""
+    zs = {other: _difference_z(point, driver, other) for other in others}
+    return {other: z for other, z in zs.items() if math.isfinite(z) and z > DISCRIMINATION_Z}
+
+
+def one_root_text(driver: str, root: float, point: ReducedPoint, against: Mapping[str, float],
+                  turning: Mapping[float, float]) -> str:
+    """"one root: mu_v = 0.52, but mu_M = 1.62 differs by z = 11.9: a root the reading cannot show (a
+    turning point of F_V/F_N at mu = 1.45, 7.8 u from the reading) may hold the truth" [1]: the
+    driver's only root, the estimates that contradict it ({name: z}) and the turning points of its
+    ratio ({mu: z_t}, z_t NaN when its u is not known)."""
+    told = " and ".join(f"{name} = {point.values[name]:.2f} differs by z = {z:.1f}" for name, z in against.items())
+    where = ", ".join(f"{mu:.2f}" + (f", {z:.1f} u from the reading" if math.isfinite(z) else " (its u not known)")
+                      for mu, z in sorted(turning.items()))
+    points = "a turning point" if len(turning) == 1 else "turning points"
+    return (f"one root: {driver} = {root:.2f}, but {told}: a root the reading cannot show ({points} of "
+            f"{RATIO_OF[driver]} at mu = {where}) may hold the truth")
+
+
+def without_driven(point: ReducedPoint, note: str, why: str) -> ReducedPoint:
+    """The point with alpha', the nu's and every mu NaN for the reason ``why``, noted."""
+    values, u, expanded, reasons = (dict(point.values), dict(point.uncertainties), dict(point.expanded),
+                                    dict(point.reasons))
+    for name in DRIVEN:
+        values[name] = u[name] = expanded[name] = math.nan
+        reasons[name] = why
+    return dataclasses.replace(point, values=values, uncertainties=u, expanded=expanded, reasons=reasons,
+                               note=note)
 
 
 def roots_text(driver: str, roots: tuple[float, ...], near: Mapping[float, float] | None = None) -> str:
@@ -248,11 +323,14 @@ def mu_bracket(readings: StandBReadings, geometry: StandBGeometry, coefficients:
 @dataclass(frozen=True)
 class DriverRoots:
     """The roots of a driver's equation in the bracket: ``exact`` [1], the fixed points at the
-    nominal readings, and ``near`` {mu [1]: z [1]}, turning points of its ratio that miss the reading
-    by z <= significance of their standard uncertainty (the readings cannot exclude mu there)."""
+    nominal readings, ``near`` {mu [1]: z [1]}, turning points of its ratio that miss the reading
+    by z <= significance of their standard uncertainty (the readings cannot exclude mu there), and
+    ``turning`` {mu [1]: z [1]}, every turning point the reading misses, whatever its z (NaN: u not
+    known), where a root could hide behind a reading that far off."""
 
     exact: tuple[float, ...]
     near: dict[float, float]
+    turning: dict[float, float] = dataclasses.field(default_factory=dict)
 
     @property
     def candidates(self) -> tuple[float, ...]:
@@ -269,7 +347,7 @@ def driver_roots(inputs: InputSet, driver: str, *, readings: StandBReadings, geo
     from a first-order propagation of the inputs at fixed alpha' (with the contact model's
     numerical error there when the coefficients state one, rig.reduction.coefficients). Near a trough of F_V/F_N a
     reading a fraction of its u lower has only the root far off: without this that root would be
-    reported as unique."""
+    reported as unique. Every turning point with its z is returned as well (``turning``)."""
     nominal = inputs.mapping(inputs.values)
     chain = dict(readings=readings, geometry=geometry, coefficients=coefficients, settings=settings)
     out, alpha_per_mu, state_at = chain_at(nominal, **chain)
@@ -278,7 +356,7 @@ def driver_roots(inputs: InputSet, driver: str, *, readings: StandBReadings, geo
         return DriverRoots((), {})
     found = scan(lambda mu: state_at(mu)[0][driver], lo, hi)
     error_at = getattr(coefficients, "numerical_error", None)
-    near = {}
+    near, every = {}, {}
     for turning in found.turning_points:
         def log_estimate(values: Mapping[str, float], mu: float = turning.mu) -> dict[str, float]:
             g = chain_at(values, **chain)[2](mu)[0][driver]
@@ -289,9 +367,10 @@ def driver_roots(inputs: InputSet, driver: str, *, readings: StandBReadings, geo
             at = with_model_error(inputs, error_at(out["l_over_a"], out["c_over_a"], alpha_per_mu * turning.mu))
         u = float(first_order(log_estimate, at, ("ln_g",)).uncertainties[0])
         z = abs(turning.residual) / u if u > 0.0 else math.inf
+        every[turning.mu] = z
         if z <= settings.significance:  # NaN (no u) never counts: the scan's roots stand alone
             near[turning.mu] = z
-    return DriverRoots(found.roots, near)
+    return DriverRoots(found.roots, near, every)
 
 
 def _difference_z(point: ReducedPoint, driver: str, other: str) -> float:
@@ -343,13 +422,6 @@ def choose_root(driver: str, roots: tuple[float, ...], points: list[ReducedPoint
         chosen = points[kept[0]]
         return dataclasses.replace(chosen, note=f"{head}; chose {roots[kept[0]]:.2f}, the root the other "
                                    f"estimates agree with (reject at z > {DISCRIMINATION_Z:g}: {evidence})")
-    base = points[0]
-    values, u, expanded, reasons = (dict(base.values), dict(base.uncertainties), dict(base.expanded),
-                                    dict(base.reasons))
     why = (f"{head} (the ratio is not monotone in mu, eqs. 33-35 with alpha'(mu), eq. 21); the other estimates "
            f"do not tell them apart ({evidence})")
-    for name in DRIVEN:
-        values[name] = u[name] = expanded[name] = math.nan
-        reasons[name] = why
-    return dataclasses.replace(base, values=values, uncertainties=u, expanded=expanded, reasons=reasons,
-                               note=head)
+    return without_driven(points[0], head, why)

@@ -225,9 +225,11 @@ class BumpWithError:
 
 
 def test_the_models_stated_error_widens_what_the_reading_cannot_exclude():
-    """mu = 1.40, F_V 3 u low: the trough is missed by z > 2 with exact coefficients (one root, 0.54, reported
-    alone), by z < 2 once nu_v's error +- 0.003 (u = 0.003/sqrt 3, rectangular) is counted."""
-    readings, _ = stand_b_readings(1.40, LOAD, 0.0, 0.2, bump_law, b_over_a=B_OVER_A)
+    """mu = 1.40, F_V 3 u low, l = 0 (F_T = 0) and T_Mo known to 5 N m only (no other estimate to compare):
+    the trough is missed by z > 2 with exact coefficients (one root, 0.52, reported alone), by z < 2 once
+    nu_v's error +- 0.003 (u = 0.003/sqrt 3, rectangular) is counted."""
+    readings, _ = stand_b_readings(1.40, LOAD, 0.0, 0.2, bump_law, b_over_a=B_OVER_A,
+                                   u=(1e-4, 1e-3, 0.05, 0.05, 0.05, 5.0))
     read = readings.lateral_force
     readings = dataclasses.replace(readings, lateral_force=Measured(read.value - 3.0 * read.u, read.u))
     level = readings.lateral_force.value / LOAD
@@ -250,10 +252,11 @@ def named_roots(note: str) -> list[float]:
     return [float(t) for t in match.group(1).split(", ")] + [float(match.group(2))]
 
 
-def bump_turning_points(level: float, u_ln: float) -> dict[float, float] | None:
+def bump_turning_points(level: float, u_ln: float, within: float = 2.0) -> dict[float, float] | None:
     """{mu: z} of the bump law's peak and trough of mu nu_v(K mu) (x^2 = 4 -+ sqrt 5) that the level misses
-    (above the peak, below the trough) by z = |ln(level/ratio)|/u_ln <= 2 (the reduction's significance);
-    None when some z is within 0.01 of 2 (the verdict would hang on the propagation's rounding)."""
+    (above the peak, below the trough) by z = |ln(level/ratio)|/u_ln <= within (default: 2, the reduction's
+    significance); None when some z is within 0.01 of 2 (the verdict would hang on the propagation's
+    rounding)."""
     near = {}
     for x, is_peak in ((math.sqrt(4.0 - math.sqrt(5.0)), True), (math.sqrt(4.0 + math.sqrt(5.0)), False)):
         mu = 20.0 * x / K
@@ -261,32 +264,148 @@ def bump_turning_points(level: float, u_ln: float) -> dict[float, float] | None:
         z = abs(math.log(level / ratio)) / u_ln
         if abs(z - 2.0) < 0.01:
             return None
-        if 0.05 < mu < 2.0 and (level > ratio if is_peak else level < ratio) and z <= 2.0:
+        if 0.05 < mu < 2.0 and (level > ratio if is_peak else level < ratio) and z <= within:
             near[mu] = z
     return near
 
 
+def bump_trough(level: float, u_ln: float) -> tuple[float, float]:
+    """(mu [1] at the bump law's trough of mu nu_v(K mu), x^2 = 4 + sqrt 5; z [1] by which the level misses it)."""
+    x = math.sqrt(4.0 + math.sqrt(5.0))
+    mu = 20.0 * x / K
+    return mu, abs(math.log(level / (mu * (0.05 + 0.5 / (1.0 + x * x))))) / u_ln
+
+
+def three_u_low(law, u=(1e-4, 1e-3, 0.05, 0.05, 0.05, 0.01), l_over_a=0.0):
+    """Readings at mu = 1.40 with F_V 3 u low: (readings, F_V/F_N [1], u of ln(F_V/F_N) [1])."""
+    readings, _ = stand_b_readings(1.40, LOAD, l_over_a * B.a, 0.2, law, b_over_a=B_OVER_A, u=u)
+    read = readings.lateral_force
+    readings = dataclasses.replace(readings, lateral_force=Measured(read.value - 3.0 * read.u, read.u))
+    level = readings.lateral_force.value / LOAD
+    return readings, level, math.hypot(read.u / readings.lateral_force.value, u[2] / LOAD)
+
+
+def differs_by(note: str, head: str) -> float:
+    """The z [1] printed right after ``head`` in a note."""
+    assert note.startswith(head), note
+    return float(re.match(r"[0-9.]+", note[len(head):]).group(0))
+
+
+def test_one_root_that_the_moment_contradicts_is_noted_and_mu_M_drives():
+    """mu = 1.40, F_V 3 u low, l = 0, M_C significant: the reading crosses the ratio only at 0.52 (closed
+    form), the trough (1.45) is missed by 2.9 u (> 2: not a root as far as F_V tells). At alpha'(0.52),
+    mu_M = 1.40 nu0(1.40 K)/nu0(0.52 K) (eq. 26 with the true M_C) contradicts 0.52: the note says so,
+    and mu_M, whose equation (nu0 rising) has one root, drives alpha' instead - to the truth."""
+    readings, level, u_ln = three_u_low(bump_law)
+    (root,) = bump_roots(level)
+    trough, z_trough = bump_trough(level, u_ln)
+    assert bump_turning_points(level, u_ln) == {} and 2.0 < z_trough < 3.0
+    nu_0 = lambda mu: bump_law(0.0, 0.0, mu * K)[2]  # noqa: E731
+    mu_m = 1.40 * nu_0(1.40) / nu_0(root)
+    point = stand_b.reduce(readings, bump_law)
+    z = differs_by(point.note, f"one root: mu_v = {root:.2f}, but mu_M = {mu_m:.2f} differs by z = ")
+    assert z > max(stand_b.DISCRIMINATION_Z, z_trough)
+    assert (f": a root the reading cannot show (a turning point of F_V/F_N at mu = {trough:.2f}, {z_trough:.1f} u "
+            "from the reading) may hold the truth; mu_M (one root, 1.40) drives alpha' instead") in point.note
+    assert point.driver == "mu_M" and point.values["mu_M"] == pytest.approx(1.40, rel=1e-7)
+    assert point.values["alpha_prime"] == pytest.approx(1.40 * K, rel=1e-7)
+    assert point.values["mu_v"] == pytest.approx(level / bump_law(0.0, 0.0, 1.40 * K)[1], rel=1e-7)  # eq. (33)
+
+
+def twin_bump_law(l_over_a: float, c_over_a: float, alpha: float) -> tuple[float, float, float]:
+    """The bump law with nu0 bumped too (its mu nu0(K mu) peaks at alpha' = 30 sqrt(4 - sqrt 5), mu = 1.16)."""
+    x = alpha / 30.0
+    return (*bump_law(l_over_a, c_over_a, alpha)[:2], 0.05 + 0.5 / (1.0 + x * x))
+
+
+def test_one_root_contradicted_with_no_estimate_to_drive_instead_is_nan_and_named():
+    """As above with nu0 bumped as well: M_C/(a F_N) = mu nu0(K mu) has two roots (x = K mu/30 solves
+    0.05 x^3 - L x^2 + 0.55 x - L = 0), so mu_M cannot drive; F_T = 0 at l = 0. The only root of F_V's
+    equation (0.52) is contradicted by mu_M: alpha', the nu's and every mu are NaN, naming it."""
+    readings, level, u_ln = three_u_low(twin_bump_law, u=(1e-4, 1e-3, 0.05, 0.005, 0.05, 0.001))
+    (root,) = bump_roots(level)
+    trough, z_trough = bump_trough(level, u_ln)
+    nu_0 = lambda mu: twin_bump_law(0.0, 0.0, mu * K)[2]  # noqa: E731
+    big = 1.40 * nu_0(1.40) * K / 30.0
+    xs = sorted(float(x.real) for x in np.roots([0.05, -big, 0.55, -big]) if abs(x.imag) < 1e-9)
+    moment_roots = [m for m in (30.0 * x / K for x in xs) if 0.05 <= m <= 2.0]
+    assert len(moment_roots) == 2 and moment_roots[1] == pytest.approx(1.40, rel=1e-9)
+    point = stand_b.reduce(readings, twin_bump_law)
+    mu_m = 1.40 * nu_0(1.40) / nu_0(root)
+    z = differs_by(point.note, f"one root: mu_v = {root:.2f}, but mu_M = {mu_m:.2f} differs by z = ")
+    assert z > max(stand_b.DISCRIMINATION_Z, z_trough)
+    assert point.note.endswith(f"(a turning point of F_V/F_N at mu = {trough:.2f}, {z_trough:.1f} u from the "
+                               "reading) may hold the truth")
+    for name in stand_b.DRIVEN:
+        assert math.isnan(point.values[name]) and math.isnan(point.uncertainties[name]), name
+        assert point.reasons[name].startswith(point.note), name
+    named = f"two roots: mu_M = {moment_roots[0]:.2f} and {moment_roots[1]:.2f}"
+    assert point.reasons["mu_v"].endswith(f"; no other estimate can drive alpha' instead ({named})")
+
+
+def test_one_root_the_others_agree_with_or_no_root_could_hide_has_no_note():
+    """The check is no noise generator. mu = 0.30, l/a = 0.5, exact readings: the trough (1.45) lies above the
+    reading, so a root could hide there, but mu_T and mu_M agree: no note. F_T then read 10 u high: mu_T
+    (= F_T/(F_N nu_T), nu_T = 0.9 tanh(l/a) without alpha') now differs from mu_v by more than 3 u, but
+    the reading would have to be some 40 u off to reach the trough - the disagreement is no hidden root:
+    no note either, mu_v still 0.30."""
+    readings, _ = stand_b_readings(0.30, LOAD, 0.5 * B.a, 0.2, bump_law, b_over_a=B_OVER_A,
+                                   u=(1e-6, 1e-3, 0.05, 0.05, 0.05, 0.01))  # l known to 1 um: nu_T sharp
+    level = readings.lateral_force.value / LOAD
+    u_ln = math.hypot(0.05 / readings.lateral_force.value, 0.05 / LOAD)
+    trough, z_trough = bump_trough(level, u_ln)
+    assert bump_roots(level) == pytest.approx([0.30], rel=1e-9) and level < trough * bump_law(0, 0, trough * K)[1]
+    assert z_trough > 30.0
+    point = stand_b.reduce(readings, bump_law)
+    assert point.note == "" and point.driver == "mu_v" and point.values["mu_v"] == pytest.approx(0.30, rel=1e-7)
+    read = readings.peripheral_force
+    high = dataclasses.replace(readings, peripheral_force=Measured(read.value + 10.0 * read.u, read.u))
+    mu_t = high.peripheral_force.value / (LOAD * 0.9 * math.tanh(0.5))  # eq. (27)
+    point = stand_b.reduce(high, bump_law)
+    assert point.values["mu_T"] == pytest.approx(mu_t, rel=1e-7)
+    # even with the difference's u as large as both u's together, mu_T is more than 3 u off
+    assert abs(mu_t - 0.30) > 3.0 * (point.uncertainties["mu_T"] + point.uncertainties["mu_v"])
+    assert point.note == "" and point.values["mu_v"] == pytest.approx(0.30, rel=1e-7)
+
+
 @settings(max_examples=25, deadline=None)
-@given(st.floats(0.1, 1.5), st.floats(-3.0, 3.0), st.sampled_from([0.0, 0.0, -2.5, -1.0, -0.5, 0.5, 1.0, 2.5]))
+@given(st.floats(0.1, 1.5), st.floats(-3.0, 3.0),
+       st.sampled_from([0.0, 0.0, -3.0, -2.5, -1.0, -0.5, 0.5, 1.0, 2.5, 3.0]))
 @example(1.453125, 0.0, 0.0)  # the truth 0.06 % below the trough: roots 0.5554, 1.4531, 1.4548 (used to be missed)
 @example(1.40, 0.0, -1.0)  # F_V 1 u low: one root, 0.5434, and the trough 0.9 u off (was reported alone)
+@example(1.40, 0.0, -3.0)  # F_V 3 u low: one root, 0.52, the trough 2.9 u off, mu_M contradicts 0.52
+@example(1.50, 1.0, -2.5)  # likewise, with mu_T contradicting it too
 def test_a_reported_mu_is_the_only_root_or_is_noted(mu, l_over_a, shift):
     """F_V read ``shift`` u off the truth. Driven by mu_v without a note: mu_v solves eq. (33) at
-    alpha'(mu_v) and is the only mu the reading allows (the law's closed form: :func:`bump_roots`, and no
-    peak or trough within 2 u of the reading, :func:`bump_turning_points`); a note names exactly those."""
+    alpha'(mu_v), is the only mu the reading allows (the law's closed form: :func:`bump_roots`, and no
+    peak or trough within 2 u of the reading, :func:`bump_turning_points`), and no mu_T or mu_M differs
+    from it by more than DISCRIMINATION_Z u of the difference - unless the reading is as far off as
+    that (F_V read 3 u off, every turning point further than the difference's z): then it is the
+    truth's root. A note names exactly those roots, or ("one root: ...") the only root and the turning
+    points a root could hide behind."""
     readings, _ = stand_b_readings(mu, LOAD, l_over_a * B.a, 0.2, bump_law, b_over_a=B_OVER_A)
     read = readings.lateral_force
     readings = dataclasses.replace(readings, lateral_force=Measured(read.value + shift * read.u, read.u))
     f_v, f_n = readings.lateral_force.value, readings.normal_force.value
+    u_ln = math.hypot(read.u / f_v, readings.normal_force.u / f_n)
     roots = bump_roots(f_v / f_n)
-    near = bump_turning_points(f_v / f_n, math.hypot(read.u / f_v, readings.normal_force.u / f_n))
+    near = bump_turning_points(f_v / f_n, u_ln)
     assume(roots is not None and near is not None)
     if shift == 0.0:
         assert any(r == pytest.approx(mu, rel=1e-6) for r in roots)  # the oracle finds the truth
     expected = sorted(roots + list(near))
     point = stand_b.reduce(readings, bump_law)
     reported = point.values["mu_v"]
-    if point.note:
+    if point.note.startswith("one root: "):
+        assert expected == pytest.approx([float(point.note.split()[4].rstrip(","))], abs=0.006)
+        turning = bump_turning_points(f_v / f_n, u_ln, within=math.inf)
+        named = re.findall(r"([0-9.]+), ([0-9.]+) u from the reading", point.note)
+        assert named and all(any(f"{m:.2f}" == n and f"{z:.1f}" == z_n for m, z in turning.items())
+                             for n, z_n in named), point.note
+        zs = [float(z) for z in re.findall(r"differs by z = ([0-9.]+)", point.note)]
+        assert max(zs) > stand_b.DISCRIMINATION_Z and min(float(z) for _, z in named) < max(zs)
+        assert point.driver != "mu_v" or not math.isfinite(reported)  # 0.52 is never reported as mu
+    elif point.note:
         assert len(expected) >= 2 and named_roots(point.note) == pytest.approx(expected, abs=0.006)
         for mu_near, z in near.items():
             assert f"{mu_near:.2f}" in point.note and f"{z:.1f} u" in point.note, point.note
@@ -297,5 +416,11 @@ def test_a_reported_mu_is_the_only_root_or_is_noted(mu, l_over_a, shift):
         assert f_v / (f_n * bump_law(l_over_a, c, reported * K)[1]) == pytest.approx(reported, rel=1e-7)  # eq. (33)
         if not point.note:
             assert expected == pytest.approx([reported], rel=1e-7)  # the only mu the reading allows
+            turning = bump_turning_points(f_v / f_n, u_ln, within=math.inf)
+            for other in ("mu_T", "mu_M"):  # and the others do not contradict it, unless no root can hide:
+                z = stand_b._difference_z(point, "mu_v", other)  # the reading is off by as much as they differ
+                if z > stand_b.DISCRIMINATION_Z:
+                    assert abs(shift) > 2.5 and all(z_t > z - 0.05 for z_t in turning.values()), (other, z, turning)
+                    assert abs(reported - mu) < (abs(shift) + 0.5) * point.uncertainties["mu_v"]  # the truth's root
     if point.note and math.isfinite(reported) and abs(shift) <= 1.0:
         assert abs(reported - mu) < 3.0 * point.uncertainties["mu_v"]  # resolved to the truth
