@@ -239,9 +239,10 @@ def scaling(points: int, gate_time_s: float, folder: Path, peak_memory: bool, wh
         base = runs["-j 1"]["wall"] if "-j 1" in runs else math.nan
         for label, run in runs.items():
             total = run["parent"] + run["workers"]
+            ratio = "-" if math.isnan(base) else f"{base / run['wall']:.2f}x"
             print(f"{k:>5} {label:>27} {run['wall']:>9.2f} {run['load']:>5.2f} {1e3 * run['parent'] / points:>14.3f} "
                   f"{1e3 * run['workers'] / points:>15.3f} {1e3 * total / points:>13.3f} {run['parent'] / total:>8.4f} "
-                  f"{base / run['wall']:>7.2f}x" + (f" {run['maxrss_MB']:>9.0f}" if peak_memory else ""))
+                  f"{ratio:>8}" + (f" {run['maxrss_MB']:>9.0f}" if peak_memory else ""))
     for label in [SCALING_RUNS[key] for key in ("j2", "cluster", "cluster-defaults") if SCALING_RUNS[key] in rounds[0]]:
         serials = [runs[label]["parent"] / (runs[label]["parent"] + runs[label]["workers"]) for runs in rounds]
         speedups = [runs["-j 1"]["wall"] / runs[label]["wall"] if "-j 1" in runs else math.nan for runs in rounds]
@@ -250,10 +251,11 @@ def scaling(points: int, gate_time_s: float, folder: Path, peak_memory: bool, wh
         total = run["parent"] + run["workers"]
         projection = ", ".join(f"{p} workers {amdahl_wall(total, serial, p):.1f} s ({1.0 / (serial + (1 - serial) / p):.1f}x)"
                                for p in (8, 32, 128))
+        versus = "" if math.isnan(speedup) else (
+            f"speed-up over -j 1 {speedup:.2f}x, median of " + ", ".join(f"{s:.2f}" for s in speedups) +
+            f" ({verdict(speedup >= BUDGET_SPEEDUP_2)} the budget {BUDGET_SPEEDUP_2:g}x on an idle 2-core machine); ")
         print(f"{label}: parent CPU {100 * serial:.2f} % of the study's CPU, median of {repeats} "
-              f"({verdict(serial <= BUDGET_PARENT_SHARE)} the budget {100 * BUDGET_PARENT_SHARE:g} %); speed-up over "
-              f"-j 1 {speedup:.2f}x, median of " + ", ".join(f"{s:.2f}" for s in speedups) +
-              f" ({verdict(speedup >= BUDGET_SPEEDUP_2)} the budget {BUDGET_SPEEDUP_2:g}x on an idle 2-core machine); "
+              f"({verdict(serial <= BUDGET_PARENT_SHARE)} the budget {100 * BUDGET_PARENT_SHARE:g} %); {versus}"
               f"Amdahl: {projection}")
 
 

@@ -116,17 +116,28 @@ def reduce_log(
     return frame
 
 
+ROOT_NOTES = (
+    ("roots:", "where the driving estimate's equation has more than one root in mu"),
+    ("one root:", "whose only root in mu another estimate contradicts (a root could hide behind a turning point)"),
+)
+"""The summary's kinds of root notes (rig.reduction.stand_b): (what the note contains, what it means)."""
+
+
 def root_notes(frame: pd.DataFrame) -> list[str]:
-    """The summary's line on points whose mu is not unique (rig.reduction.stand_b): how many, how many
-    resolved by another reading, how many NaN with the roots named; [] when every root was unique."""
-    noted = frame.index[frame["note"].str.contains("roots:", regex=False).to_numpy()]
-    if not len(noted):
-        return []
-    unresolved = [int(i) for i in noted if not np.isfinite(frame.loc[i, "mu_v"])]
-    shown = ", ".join(map(str, unresolved[:20])) + (" ..." if len(unresolved) > 20 else "")
-    return [f"{len(noted)} point(s) where the driving estimate's equation has more than one root in mu "
-            f"(reduced.csv's note names them): {len(noted) - len(unresolved)} resolved by another reading, "
-            f"{len(unresolved)} reduced to NaN" + (f" (points {shown})" if unresolved else "")]
+    """The summary's lines on points whose mu is not unique or whose only root is contradicted
+    (rig.reduction.stand_b, ROOT_NOTES): how many, how many resolved by another reading, how many NaN
+    (named); [] when every root was unique and uncontradicted."""
+    lines = []
+    for marker, what in ROOT_NOTES:
+        noted = frame.index[frame["note"].str.contains(marker, regex=False).to_numpy()]
+        if not len(noted):
+            continue
+        unresolved = [int(i) for i in noted if not np.isfinite(frame.loc[i, "mu_v"])]
+        shown = ", ".join(map(str, unresolved[:20])) + (" ..." if len(unresolved) > 20 else "")
+        lines.append(f"{len(noted)} point(s) {what} (reduced.csv's note names them): "
+                     f"{len(noted) - len(unresolved)} resolved by another reading, {len(unresolved)} reduced to NaN"
+                     + (f" (points {shown})" if unresolved else ""))
+    return lines
 
 
 def _unit(column: str) -> str:
