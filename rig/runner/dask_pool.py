@@ -61,10 +61,11 @@ STUDY_CONFIG: dict[str, object] = {
 statistical profiler off (it samples a running task's stack every 10 ms) and its monitors slowed
 down - the event-loop health check from every 20 ms to every 1 s, the system monitor from every
 0.5 s to every 5 s, the nanny's and worker's memory check from every 0.1 s to every 1 s. Each wakes
-the worker's event loop, which then takes the interpreter from the task's thread. Measured on two
-workers with 2 000 points each (benchmarks/bench_scale.py, docs/scaling.md): the workers' own Dask
-threads 0.5-0.7 % of a busy worker's CPU instead of 2.1-2.4 %, the task's thread kept waiting
-0.4-0.6 s instead of 1.0-1.1 s, the scheduler and nannies 0.2 s of CPU instead of 0.8-1.0 s.
+the worker's event loop, which then takes the interpreter from the task's thread. Measured with
+``python benchmarks/bench_scale.py --points --dask-overhead 500 --ceiling-repeats 4`` (2 000 points
+on each of two workers at once, about 12 s; docs/scaling.md): Dask's own threads 0.25-0.36 % of a
+busy worker's CPU instead of 3.9-6.0 % with Dask's defaults, the task's thread kept waiting
+0.07-0.19 s instead of 0.67-1.30 s, the scheduler and nannies 0.09-0.19 s of CPU instead of 0.50-0.92 s.
 Results do not depend on it; the costs are a coarser dashboard and a memory limit enforced within
 1 s instead of 0.1 s."""
 
