@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import contextlib
 import os
-import re
 import random
+import re
 import signal
 import subprocess
 import sys
@@ -24,8 +24,8 @@ from pathlib import Path
 from concurrent.futures import ThreadPoolExecutor
 from unittest import mock
 
-import h5py
 import dask
+import h5py
 import numpy as np
 import pandas as pd
 import pytest
@@ -287,7 +287,7 @@ def test_a_scheduler_with_a_characteristics_scene_is_refused(tmp_path):
 
 
 def _settings(keys) -> dict:
-    """On a worker or the scheduler: those Dask settings as that process holds them."""
+    """On a worker: those Dask settings as its process holds them."""
     return {key: dask.config.get(key) for key in keys}
 
 
