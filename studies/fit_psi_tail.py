@@ -1,12 +1,12 @@
 """Why `rig fit`'s Psi scatters twice as widely in whole-chain (twin) coverage runs as in model mode.
 
-    python studies/fit_psi_tail.py --seeds 40 --profile 5012 5000
+    python studies/fit_psi_tail.py --seeds 40 --profile 5012 5000 5021
 
 Each seed's stand-A scene is benchmarks/bench_fit_coverage.py's (R_x = 20 mm, loads 150 and 300 N,
 8 points per load, 5 s gates, n = 16, mu = 0.5, Psi = 1.3); it is simulated and reduced
 (rig.runner.run_scene) and its reduced.csv, whose truth columns give each point's true l/a, is
-fitted for mu and Psi (table law, no polish, no profile: the estimate bench_fit_coverage.py's twin
-mode reports) in five variants that take the error chain apart:
+fitted for mu and Psi as rig fit does it (rank_models; table law, no polish, no profile: the
+estimate bench_fit_coverage.py's twin mode reports) in five variants that take the error chain apart:
 
 * twin: the reduced data as they are (measured l/a and F_y);
 * true l/a: the measured F_y at the true l/a (the rolling point's error removed);
@@ -17,7 +17,8 @@ mode reports) in five variants that take the error chain apart:
   fit's effective variance assumes (rig.fit.engine).
 Printed per seed, then per variant the median, standard deviation and the seeds above 1.34, and
 the measured l/a errors in units of the reduction's u(l/a). --profile SEED ...: chi2(Psi) - min
-(mu minimised) over Psi = 1-1.6 for those seeds, twin and true l/a. Uses public names of rig
+(mu minimised) over Psi = 1-1.6 for those seeds, twin and true l/a, with Psi held at each value
+(the stand's table at that exact Psi, no interpolation between the fit's Psi nodes). Uses public names of rig
 only; --keep DIR keeps (and reuses) the runs.
 """
 
@@ -33,7 +34,8 @@ import numpy as np
 import pandas as pd
 from scipy.optimize import minimize_scalar
 
-from rig.fit.engine import Objective, fit
+from rig.fit.choice import rank_models
+from rig.fit.engine import Objective
 from rig.fit.forward import ForwardModel
 from rig.fit.parameters import parse_names
 from rig.fit.run import load_data
@@ -64,14 +66,17 @@ def reduced_run(bench, seed: int, root: Path) -> Path:
     return out / "reduced.csv"
 
 
-def psi_of(obs, memo) -> tuple[float, float]:
-    """(Psi, chi2) of the mu + Psi fit from fit_data's start values."""
-    r = fit(ForwardModel(obs, FREE, {}, memo), [p.start for p in FREE], profile=False, polish="never")
-    return r.estimate("psi").value, r.chi2
+def psi_of(obs) -> tuple[float, float]:
+    """(Psi, chi2) of the mu + Psi fit as rig fit does it (rig.fit.choice.rank_models: the better of
+    two starts, the default one and the mu-only optimum at Psi = 1), without profile or polish."""
+    models = rank_models(obs, FREE, {}, {p.name: p.start for p in FREE}, profile=False, polish="never")
+    full = models[-1].result
+    return full.estimate("psi").value, full.chi2
 
 
 def profile(obs, memo, grid: np.ndarray) -> np.ndarray:
-    """chi2(Psi) with mu minimised (the fit's objective: effective variance, common errors)."""
+    """chi2(Psi) with mu minimised (the fit's objective: effective variance, common errors); Psi is
+    held, so each value is the stand's table at that exact Psi (rig.fit.forward)."""
     out = []
     for psi in grid:
         model = ForwardModel(obs, parse_names(["mu"]), {"psi": float(psi)}, memo)
@@ -117,7 +122,7 @@ def main() -> None:
                 "model": dataclasses.replace(at_true, y=drawn),
                 "model + l/a draw": dataclasses.replace(at_true, y=drawn, l=l_drawn, x=l_drawn),
             }
-            row = {v: psi_of(o, memo) for v, o in variants.items()}
+            row = {v: psi_of(o) for v, o in variants.items()}
             z = (obs.l - true_l) / obs.u_l
             if seed in range(args.first_seed, args.first_seed + args.seeds):
                 for v in VARIANTS:
@@ -138,13 +143,13 @@ def main() -> None:
         for v in VARIANTS:
             e = np.array(estimates[v])
             if e.size:
-                print(f"{v:>16s}: median {np.median(e):.4f}, mean {e.mean():.4f}, sd {e.std(ddof=1):.4f}, "
+                print(f"{v:>16s}: median {np.median(e):.4f}, mean {e.mean():.4f}, sd {e.std(ddof=1) if e.size > 1 else float('nan'):.4f}, "
                       f"{np.sum(e > TAIL)} above {TAIL}, max {e.max():.4f}; mean chi2 {np.mean(chi2s[v]):.1f} "
                       f"(mean dof {np.mean(dofs):.1f})")
         z_all = np.array(z_all)
         if z_all.size:
             print(f"l/a error / u(l/a), all points: mean {z_all.mean():+.3f}, sd {z_all.std(ddof=1):.3f}; "
-                  f"per-seed means: sd {np.std(z_means, ddof=1):.3f} (independent errors: {1 / np.sqrt(16):.3f})")
+                  f"per-seed means: sd {np.std(z_means, ddof=1) if len(z_means) > 1 else float('nan'):.3f} (independent errors: {1 / np.sqrt(16):.3f})")
 
 
 if __name__ == "__main__":
