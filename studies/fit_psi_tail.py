@@ -16,7 +16,8 @@ estimate bench_fit_coverage.py's twin mode reports) in five variants that take t
 * model + l/a draw: the same, fitted at l/a = true + u(l/a) z, z ~ N(0, 1), the error the
   fit's effective variance assumes (rig.fit.engine).
 Printed per seed, then per variant the median, standard deviation and the seeds above 1.34, and
-the measured l/a errors in units of the reduction's u(l/a). --profile SEED ...: chi2(Psi) - min
+the measured l/a errors in units of the reduction's u(l/a); --coverage adds, for the two model
+variants, how often Psi = 1.3 is inside the 95 % profile interval. --profile SEED ...: chi2(Psi) - min
 (mu minimised) over Psi = 1-1.6 for those seeds, twin and true l/a, with Psi held at each value
 (the stand's table at that exact Psi, no interpolation between the fit's Psi nodes). Uses public names of rig
 only; --keep DIR keeps (and reuses) the runs.
@@ -66,12 +67,13 @@ def reduced_run(bench, seed: int, root: Path) -> Path:
     return out / "reduced.csv"
 
 
-def psi_of(obs) -> tuple[float, float]:
-    """(Psi, chi2) of the mu + Psi fit as rig fit does it (rig.fit.choice.rank_models: the better of
-    two starts, the default one and the mu-only optimum at Psi = 1), without profile or polish."""
-    models = rank_models(obs, FREE, {}, {p.name: p.start for p in FREE}, profile=False, polish="never")
-    full = models[-1].result
-    return full.estimate("psi").value, full.chi2
+def psi_of(obs, intervals: bool = False) -> tuple[float, float, bool | None]:
+    """(Psi, chi2, Psi inside its 95 % profile interval or None) of the mu + Psi fit as rig fit does
+    it (rig.fit.choice.rank_models: the better of two starts, the default one and the mu-only
+    optimum at Psi = 1), without polish; the profile only when ``intervals``."""
+    models = rank_models(obs, FREE, {}, {p.name: p.start for p in FREE}, profile=intervals, polish="never")
+    e = models[-1].result.estimate("psi")
+    return e.value, models[-1].result.chi2, (e.lo95 <= PSI <= e.hi95) if intervals else None
 
 
 def profile(obs, memo, grid: np.ndarray) -> np.ndarray:
@@ -93,6 +95,8 @@ def main() -> None:
     parser.add_argument("--first-seed", type=int, default=5000)
     parser.add_argument("--keep", type=Path, help="directory for the runs (reused when there)")
     parser.add_argument("--profile", type=int, nargs="*", default=[], help="seeds whose Psi profile to print")
+    parser.add_argument("--coverage", action="store_true",
+                        help="also count Psi inside its 95 %% profile interval for the two model variants (slower)")
     args = parser.parse_args()
     bench = bench_module()
     with tempfile.TemporaryDirectory(prefix="fit_psi_tail_") as tmp:
@@ -100,6 +104,7 @@ def main() -> None:
         root.mkdir(parents=True, exist_ok=True)
         estimates = {v: [] for v in VARIANTS}
         chi2s = {v: [] for v in VARIANTS}
+        covered = {v: [] for v in VARIANTS}
         dofs = []
         z_all, z_means = [], []
         seeds = sorted(set(range(args.first_seed, args.first_seed + args.seeds)) | set(args.profile))
@@ -122,12 +127,13 @@ def main() -> None:
                 "model": dataclasses.replace(at_true, y=drawn),
                 "model + l/a draw": dataclasses.replace(at_true, y=drawn, l=l_drawn, x=l_drawn),
             }
-            row = {v: psi_of(o) for v, o in variants.items()}
+            row = {v: psi_of(o, args.coverage and v.startswith("model")) for v, o in variants.items()}
             z = (obs.l - true_l) / obs.u_l
             if seed in range(args.first_seed, args.first_seed + args.seeds):
                 for v in VARIANTS:
                     estimates[v].append(row[v][0])
                     chi2s[v].append(row[v][1])
+                    covered[v].append(row[v][2])
                 dofs.append(obs.size - len(FREE))
                 z_all.extend(z)
                 z_means.append(z.mean())
@@ -145,7 +151,8 @@ def main() -> None:
             if e.size:
                 print(f"{v:>16s}: median {np.median(e):.4f}, mean {e.mean():.4f}, sd {e.std(ddof=1) if e.size > 1 else float('nan'):.4f}, "
                       f"{np.sum(e > TAIL)} above {TAIL}, max {e.max():.4f}; mean chi2 {np.mean(chi2s[v]):.1f} "
-                      f"(mean dof {np.mean(dofs):.1f})")
+                      f"(mean dof {np.mean(dofs):.1f})"
+                      + (f"; Psi inside its 95 % interval {sum(covered[v])}/{e.size}" if None not in covered[v] else ""))
         z_all = np.array(z_all)
         if z_all.size:
             print(f"l/a error / u(l/a), all points: mean {z_all.mean():+.3f}, sd {z_all.std(ddof=1):.3f}; "
