@@ -83,8 +83,15 @@ def draw_errors(obs: Observations, truth: np.ndarray, rng: np.random.Generator) 
 
 
 def one_model_seed(obs: Observations, truth: np.ndarray, seed: int, mu: float, psi: float, profile: bool) -> dict:
+    """One seed of model mode: y = the truth at the run's rolling points l plus e ~ N(0, V)
+    (draw_errors), fitted at rolling points measured as the reduction measures them, l + u_l N(0, 1)
+    (the counters' error, which the fit counts as errors in l: a draw without it is quieter than the
+    fit assumes)."""
     rng = np.random.default_rng(seed)
-    drawn = Observations(**{**obs.__dict__, "y": truth + draw_errors(obs, truth, rng)})
+    y = truth + draw_errors(obs, truth, rng)
+    measured_l = obs.l + obs.u_l * rng.standard_normal(obs.size)
+    x = measured_l if np.array_equal(obs.x, obs.l) else obs.x
+    drawn = Observations(**{**obs.__dict__, "y": y, "l": measured_l, "x": x})
     free = parse_names(["mu", "psi"])
     models = rank_models(drawn, free, {}, {p.name: p.start for p in free}, profile=profile, polish="never")
     return summarise(models, mu, psi)
