@@ -1,4 +1,4 @@
-"""Why `rig fit`'s Psi scatters twice as widely in whole-chain (twin) coverage runs as in model mode.
+"""Why `rig fit`'s Psi scatters in whole-chain (twin) coverage runs twice as widely as in a draw of F_y's errors alone.
 
     python studies/fit_psi_tail.py --seeds 40 --profile 5012 5000 5021
 
@@ -12,9 +12,9 @@ estimate bench_fit_coverage.py's twin mode reports) in five variants that take t
 * true l/a: the measured F_y at the true l/a (the rolling point's error removed);
 * l/a error only: noise-free F_y = f(mu, Psi) at the true l/a, fitted at the measured l/a;
 * model: F_y drawn from the fit's own error model (independent u, calibration, zero drift:
-  bench_fit_coverage.py's model mode) at the true l/a, fitted at the true l/a;
+  bench_fit_coverage.py's draw_errors) at the true l/a, fitted at the true l/a;
 * model + l/a draw: the same, fitted at l/a = true + u(l/a) z, z ~ N(0, 1), the error the
-  fit's effective variance assumes (rig.fit.engine).
+  fit's effective variance assumes (rig.fit.engine), as bench_fit_coverage.py's model mode draws it.
 Printed per seed, then per variant the median, standard deviation and the seeds above 1.34, and
 the measured l/a errors in units of the reduction's u(l/a); --coverage adds, for the two model
 variants, how often Psi = 1.3 is inside the 95 % profile interval. --profile SEED ...: chi2(Psi) - min
