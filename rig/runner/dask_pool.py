@@ -106,13 +106,12 @@ def study_cluster(workers: int, **options):
     ``options`` go to LocalCluster (e.g. ``env``, ``dashboard_address``). Use it as a context manager
     and pass its ``scheduler_address`` as ``scheduler`` (rig.run, ``rig run --scheduler``)."""
     workers = validate.integer("workers", workers, 1, MAX_WORKERS)
-    _distributed("workers", workers)
-    import dask
-    from distributed import LocalCluster
+    cluster_class = _distributed("workers", workers).LocalCluster
+    import dask  # installed with distributed
 
     options = {"threads_per_worker": 1, "processes": True, "dashboard_address": None, **options}
     with dask.config.set(STUDY_CONFIG):  # read when the scheduler, nannies and workers start
-        return LocalCluster(n_workers=workers, **options)
+        return cluster_class(n_workers=workers, **options)
 
 
 def _stand_for(run: str, scene: StandScene) -> Stand:
