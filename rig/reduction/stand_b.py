@@ -323,14 +323,19 @@ def mu_bracket(readings: StandBReadings, geometry: StandBGeometry, coefficients:
 @dataclass(frozen=True)
 class DriverRoots:
     """The roots of a driver's equation in the bracket: ``exact`` [1], the fixed points at the
-    nominal readings, ``near`` {mu [1]: z [1]}, turning points of its ratio that miss the reading
-    by z <= significance of their standard uncertainty (the readings cannot exclude mu there), and
-    ``turning`` {mu [1]: z [1]}, every turning point the reading misses, whatever its z (NaN: u not
-    known), where a root could hide behind a reading that far off."""
+    nominal readings, and ``turning`` {mu [1]: z [1]}, every turning point of its ratio with the
+    number of its standard uncertainties by which the reading misses it (NaN: u not known), where a
+    root could hide behind a reading that far off; those missed by z <= ``significance`` [1] are
+    ``near`` (the readings cannot exclude mu there)."""
 
     exact: tuple[float, ...]
-    near: dict[float, float]
     turning: dict[float, float] = dataclasses.field(default_factory=dict)
+    significance: float = 0.0
+
+    @property
+    def near(self) -> dict[float, float]:
+        """{mu [1]: z [1]} of the turning points the reading misses by z <= significance (NaN never)."""
+        return {mu: z for mu, z in self.turning.items() if z <= self.significance}
 
     @property
     def candidates(self) -> tuple[float, ...]:
@@ -353,10 +358,10 @@ def driver_roots(inputs: InputSet, driver: str, *, readings: StandBReadings, geo
     out, alpha_per_mu, state_at = chain_at(nominal, **chain)
     lo, hi = mu_bracket(readings, geometry, coefficients)
     if not lo < hi:
-        return DriverRoots((), {})
+        return DriverRoots(())
     found = scan(lambda mu: state_at(mu)[0][driver], lo, hi)
     error_at = getattr(coefficients, "numerical_error", None)
-    near, every = {}, {}
+    every = {}
     for turning in found.turning_points:
         def log_estimate(values: Mapping[str, float], mu: float = turning.mu) -> dict[str, float]:
             g = chain_at(values, **chain)[2](mu)[0][driver]
@@ -367,10 +372,8 @@ def driver_roots(inputs: InputSet, driver: str, *, readings: StandBReadings, geo
             at = with_model_error(inputs, error_at(out["l_over_a"], out["c_over_a"], alpha_per_mu * turning.mu))
         u = float(first_order(log_estimate, at, ("ln_g",)).uncertainties[0])
         z = abs(turning.residual) / u if u > 0.0 else math.inf
-        every[turning.mu] = z
-        if z <= settings.significance:  # NaN (no u) never counts: the scan's roots stand alone
-            near[turning.mu] = z
-    return DriverRoots(found.roots, near, every)
+        every[turning.mu] = z  # NaN (no u) is never near: the scan's roots stand alone
+    return DriverRoots(found.roots, every, settings.significance)
 
 
 def _difference_z(point: ReducedPoint, driver: str, other: str) -> float:
